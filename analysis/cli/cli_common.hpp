@@ -1,0 +1,56 @@
+// Shared pieces of the granbench command line: the error type that maps to exit code 2 with one
+// line naming the option and its valid range, validators, and the options every model-facing
+// subcommand shares (material, curve, slope, depth). Parsing and validation only; no physics.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "material.hpp"
+#include "mu_curves.hpp"
+
+namespace granbench::cli {
+
+// Bad user input discovered after parsing: printed as "granbench: error: <what>", exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Validators whose messages name the valid range.
+CLI::Validator positive();            // (0, inf)
+CLI::Validator open_range(double lo, double hi);  // (lo, hi)
+
+// Options shared by wellposed/steady/dispersion/run/sweep/compare.
+struct FlowOptions {
+  std::string curve = "regularised";
+  double angle_deg = 28.5;
+  double h0 = 4e-3;
+  Material material;
+
+  CurveKind curve_kind() const;
+  MuCurve make_curve() const;
+};
+// add_slope=false for subcommands with no slope (wellposed).
+void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope = true);
+
+// Common output options.
+struct OutputOptions {
+  bool json = false;
+  std::string out;   // HDF5 path, empty for none
+  std::string plot;  // PNG path, empty for none
+  bool quiet = false;
+};
+void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot = true);
+
+// Print JSON (pretty) to stdout; nulls for non-finite numbers.
+void print_json(const nlohmann::json& j);
+nlohmann::json number_or_null(double v);
+// Run a plotting script from analysis/plots with Debian's python3: script data.h5 out.png [args].
+void run_plot_script(const std::string& script, const std::string& h5, const std::string& png,
+                     const std::string& extra_args = "");
+// Show progress only on a terminal and without --quiet (DESIGN.md).
+bool progress_enabled(const OutputOptions& o);
+
+}  // namespace granbench::cli

@@ -1,0 +1,20 @@
+// The granbench subcommands. Each add_*_command registers one subcommand with its options and a
+// callback; callbacks signal bad input with cli::UsageError (exit 2) and other failures with
+// cli::CommandFailed (its exit code). One file per subcommand: cmd_<name>.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+
+namespace granbench::cli {
+
+struct CommandFailed : std::runtime_error {
+  CommandFailed(const std::string& what, int code) : std::runtime_error(what), exit_code(code) {}
+  int exit_code;
+};
+
+void add_wellposed_command(CLI::App& app);
+void add_steady_command(CLI::App& app);
+void add_dispersion_command(CLI::App& app);
+
+}  // namespace granbench::cli

@@ -1,0 +1,49 @@
+// A thin RAII wrapper over the HDF5 C API: create a file, write double/int datasets of any rank,
+// and scalar or string attributes. Files are written to "<name>.partial" and renamed on
+// close(), so an interrupted or failed run never leaves a half-written file under the real name.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "surface_series.hpp"
+
+namespace granbench {
+
+class H5Writer {
+ public:
+  explicit H5Writer(std::string path);
+  ~H5Writer();  // discards the partial file unless close() succeeded
+  H5Writer(const H5Writer&) = delete;
+  H5Writer& operator=(const H5Writer&) = delete;
+
+  void create_group(const std::string& group);
+  void write(const std::string& name, std::span<const double> data,
+             const std::vector<std::size_t>& dims = {});
+  void write(const std::string& name, std::span<const std::int64_t> data,
+             const std::vector<std::size_t>& dims = {});
+  // Attributes on an object ("/" for the file root).
+  void attribute(const std::string& object, const std::string& key, double value);
+  void attribute(const std::string& object, const std::string& key, const std::string& value);
+  // Flush, close and rename into place.
+  void close();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::string partial_;
+  std::int64_t file_ = -1;
+  bool closed_ = false;
+};
+
+void write_surface_series(H5Writer& out, const std::string& group, const SurfaceSeries& s);
+
+// Reading back (tests, resumable sweeps, plots-free analysis).
+std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
+                                    std::vector<std::size_t>* dims = nullptr);
+bool h5_has(const std::string& path, const std::string& name);
+SurfaceSeries read_surface_series(const std::string& path, const std::string& group);
+
+}  // namespace granbench

@@ -9,7 +9,7 @@
 //   F^2 lambda^2 + (2 i chi F^2 k + Gamma + F^2 k^2/R) lambda
 //        + (1 - chi F^2) k^2 + i (5/2) Gamma k + i F^2 k^3/R = 0,
 //
-// which is (7.11) multiplied by i F^2/R... for chi = 1. The growth rate is Re(lambda) and the
+// which for chi = 1 is (7.11) multiplied by i F^2/R. The growth rate is Re(lambda) and the
 // phase speed -Im(lambda)/k; the unstable root is the one with the larger real part (DESIGN.md §5).
 // Long waves grow when F^2 (25/4 - 4 chi) > 1, i.e. F > 2/sqrt(25 - 16 chi) (= 2/3 for chi = 1).
 #pragma once
@@ -51,6 +51,9 @@ double critical_froude(double chi);
 std::optional<double> cutoff_k_hat(const DispersionParams& p);
 // Closed form for chi = 1: k_c^2 = R Gamma (3F - 2)/(2 F^2).
 double cutoff_k_hat_closed_form_chi1(const DispersionParams& p);
+// Closed form for any chi, derived in dispersion.cpp: with v = chi + sqrt(chi^2 F^2 + 1 - chi F^2)/F
+// the neutral wave speed (in units of u0), k_c^2 = R Gamma (5/2 - v) / (F^2 (v - 1)).
+double cutoff_k_hat_closed_form(const DispersionParams& p);
 
 // One mode in dimensional units (7.13): k_hat = 2 pi h0/Lx, lambda = lambda_hat u0/h0.
 struct DispersionMode {

@@ -1,0 +1,114 @@
+// Shared command-line pieces: validators, flow/material options, JSON printing, plotting.
+#include "cli_common.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+namespace granbench::cli {
+
+namespace {
+std::string fmt(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+}  // namespace
+
+CLI::Validator positive() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        try {
+          std::size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) throw std::invalid_argument(text);
+        } catch (const std::exception&) {
+          return "'" + text + "' is not a number; valid range (0, inf)";
+        }
+        if (!(v > 0.0) || !std::isfinite(v))
+          return "value " + text + " out of range; valid range (0, inf)";
+        return {};
+      },
+      "in (0, inf)", "positive");
+}
+
+CLI::Validator open_range(double lo, double hi) {
+  const std::string range = "(" + fmt(lo) + ", " + fmt(hi) + ")";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        double v = 0.0;
+        try {
+          std::size_t used = 0;
+          v = std::stod(text, &used);
+          if (used != text.size()) throw std::invalid_argument(text);
+        } catch (const std::exception&) {
+          return "'" + text + "' is not a number; valid range " + range;
+        }
+        if (!(v > lo && v < hi)) return "value " + text + " out of range; valid range " + range;
+        return {};
+      },
+      "in " + range, "open_range");
+}
+
+CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
+
+MuCurve FlowOptions::make_curve() const { return MuCurve(curve_kind(), material, h0); }
+
+void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
+  std::string names;
+  for (const auto& n : all_curve_names()) names += (names.empty() ? "" : ",") + n;
+  app.add_option("--curve", o.curve, "mu(I) curve {" + names + "}")
+      ->check(CLI::IsMember(all_curve_names()))
+      ->capture_default_str();
+  if (add_slope) {
+    app.add_option("--angle", o.angle_deg, "slope angle zeta [deg], in (0, 90)")
+        ->check(open_range(0.0, 90.0))
+        ->capture_default_str();
+  }
+  app.add_option("--h0", o.h0, "flow depth h0 [m], > 0")->check(positive())->capture_default_str();
+  Material& m = o.material;
+  const std::string g = "Material (table 1)";
+  app.add_option("--mu-s", m.mu_s, "static friction mu_s")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--mu-d", m.mu_d, "dynamic friction mu_d")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--I0", m.I0, "inertial-number scale I0")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--d", m.d, "grain diameter d [m]")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--phi", m.phi, "solids volume fraction phi, in (0, 1)")->check(open_range(0.0, 1.0))->group(g)->capture_default_str();
+  app.add_option("--rho-star", m.rho_star, "grain density [kg/m^3]")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--g", m.g, "gravity [m/s^2]")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3)")->group(g)->capture_default_str();
+  app.add_option("--alpha", m.alpha, "low-I regularisation alpha of (5.2)/(6.3), in (0, 2)")->check(open_range(0.0, 2.0))->group(g)->capture_default_str();
+  app.add_option("--kk-mu0", m.kk_mu0, "Kamrin-Koval mu_0 of (5.1)")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--kk-cK", m.kk_cK, "Kamrin-Koval c_K of (5.1)")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--hm-c", m.hm_c, "Holyoake-McElwaine c of (6.1)")->check(positive())->group(g)->capture_default_str();
+}
+
+void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
+  app.add_flag("--json", o.json, "print the result as one JSON object on stdout");
+  app.add_option("--out", o.out, "write data to this HDF5 file");
+  if (with_plot) app.add_option("--plot", o.plot, "draw the figure into this PNG file");
+  app.add_flag("--quiet", o.quiet, "no progress on stderr");
+  app.set_config("--config", "", "read options from a TOML file (command line overrides)");
+}
+
+nlohmann::json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+
+void run_plot_script(const std::string& script, const std::string& h5, const std::string& png,
+                     const std::string& extra_args) {
+  const std::string python = "/usr/bin/python3";
+  const std::string cmd = python + " '" + std::string(GRANBENCH_PLOT_DIR) + "/" + script + "' '" +
+                          h5 + "' '" + png + "' " + extra_args;
+  if (std::system(cmd.c_str()) != 0)
+    throw std::runtime_error("plotting failed (" + cmd + "); needs python3-matplotlib, python3-h5py");
+}
+
+bool progress_enabled(const OutputOptions& o) { return !o.quiet && isatty(STDERR_FILENO); }
+
+}  // namespace granbench::cli

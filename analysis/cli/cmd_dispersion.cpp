@@ -1,0 +1,160 @@
+// granbench dispersion: exact linear theory for perturbations of wavelength Lx of the steady
+// flow. --theory depthavg is the paper's relation (7.11) (chi = 1), depthavg-bagnold the same
+// with the Bagnold shape factor chi = 5/4 (DESIGN.md §10), twod the full 2D linear stability.
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <numbers>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "dispersion.hpp"
+#include "hdf5_file.hpp"
+#include "steady_state.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+enum class Theory { DepthAvg, DepthAvgBagnold, TwoD };
+
+struct DispersionOptions {
+  FlowOptions flow;
+  OutputOptions output;
+  std::vector<double> Lx;
+  std::string theory = "depthavg";
+};
+
+Theory parse_theory(const std::string& t) {
+  if (t == "depthavg") return Theory::DepthAvg;
+  if (t == "depthavg-bagnold") return Theory::DepthAvgBagnold;
+  return Theory::TwoD;
+}
+
+void write_dispersion_data(const std::string& path, const SteadyState& s, double chi,
+                           const std::vector<DispersionMode>& modes) {
+  // The curve over k_hat (log grid) and the chosen points, dimensional and non-dimensional.
+  std::vector<double> k_hat, lam_re, lam_im, growth, speed, Lx;
+  const DispersionParams p = DispersionParams::from(s, chi);
+  for (int i = 0; i < 400; ++i) {
+    const double k = std::pow(10.0, -3.0 + 4.0 * i / 399.0);
+    const auto m = dispersion_mode(s, chi, Lx_from_k_hat(s, k));
+    k_hat.push_back(k);
+    lam_re.push_back(m.lambda_hat.real());
+    lam_im.push_back(m.lambda_hat.imag());
+    growth.push_back(m.growth_rate);
+    speed.push_back(m.phase_speed);
+    Lx.push_back(m.Lx);
+  }
+  std::vector<double> pk, pg, pc, pL;
+  for (const auto& m : modes) {
+    pk.push_back(m.k_hat);
+    pg.push_back(m.growth_rate);
+    pc.push_back(m.phase_speed);
+    pL.push_back(m.Lx);
+  }
+  H5Writer out(path);
+  out.write("curve/k_hat", k_hat);
+  out.write("curve/lambda_hat_re", lam_re);
+  out.write("curve/lambda_hat_im", lam_im);
+  out.write("curve/growth_rate", growth);
+  out.write("curve/phase_speed", speed);
+  out.write("curve/Lx", Lx);
+  out.write("points/k_hat", pk);
+  out.write("points/growth_rate", pg);
+  out.write("points/phase_speed", pc);
+  out.write("points/Lx", pL);
+  out.attribute("/", "chi", chi);
+  out.attribute("/", "F", p.F);
+  out.attribute("/", "R", p.R);
+  out.attribute("/", "Gamma", p.Gamma);
+  out.attribute("/", "u_mean", s.u_mean);
+  out.attribute("/", "h0", s.h0);
+  out.close();
+}
+
+void run_dispersion(const DispersionOptions& o) {
+  SteadyState s;
+  try {
+    s = steady_state(o.flow.make_curve(), degrees_to_radians(o.flow.angle_deg), o.flow.h0);
+  } catch (const CurveRangeError& e) {
+    throw UsageError(std::string("--angle: ") + e.what());
+  }
+  const Theory theory = parse_theory(o.theory);
+  if (theory == Theory::TwoD)
+    throw UsageError("--theory twod: the 2D linear stability is not available in this build");
+  const double chi = theory == Theory::DepthAvgBagnold ? 1.25 : 1.0;
+  const DispersionParams p = DispersionParams::from(s, chi);
+
+  std::vector<DispersionMode> modes;
+  for (double Lx : o.Lx) modes.push_back(dispersion_mode(s, chi, Lx));
+  const auto kc = cutoff_k_hat(p);
+  const double cutoff_Lx = kc ? Lx_from_k_hat(s, *kc) : NAN;
+
+  if (!o.output.out.empty() || !o.output.plot.empty()) {
+    const std::string h5 = !o.output.out.empty() ? o.output.out : o.output.plot + ".data.h5";
+    write_dispersion_data(h5, s, chi, modes);
+    if (!o.output.plot.empty()) {
+      run_plot_script("dispersion.py", h5, o.output.plot);
+      if (o.output.out.empty()) std::filesystem::remove(h5);
+    }
+  }
+
+  if (o.output.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& m : modes)
+      list.push_back({{"Lx", m.Lx},
+                      {"k_hat", m.k_hat},
+                      {"lambda_hat_re", m.lambda_hat.real()},
+                      {"lambda_hat_im", m.lambda_hat.imag()},
+                      {"growth_rate", m.growth_rate},
+                      {"phase_speed", m.phase_speed}});
+    print_json({{"theory", o.theory},
+                {"chi", chi},
+                {"F", p.F},
+                {"F_critical", critical_froude(chi)},
+                {"R", p.R},
+                {"Gamma", p.Gamma},
+                {"u_mean", s.u_mean},
+                {"modes", list},
+                {"cutoff_k_hat", kc ? nlohmann::json(*kc) : nlohmann::json(nullptr)},
+                {"cutoff_Lx", number_or_null(cutoff_Lx)}});
+    return;
+  }
+  std::cout << std::setprecision(5) << "Temporal dispersion relation, theory " << o.theory
+            << " (chi = " << chi << "), " << o.flow.curve << " curve, angle " << o.flow.angle_deg
+            << " deg, h0 = " << s.h0 << " m\n  F = " << p.F << " (critical "
+            << critical_froude(chi) << "), R = " << p.R << ", Gamma = " << p.Gamma << "\n\n"
+            << "  " << std::setw(10) << "Lx [m]" << std::setw(10) << "k_hat" << std::setw(14)
+            << "Re lam_hat" << std::setw(14) << "Im lam_hat" << std::setw(15) << "growth [1/s]"
+            << std::setw(15) << "speed [m/s]" << "\n";
+  for (const auto& m : modes)
+    std::cout << "  " << std::setw(10) << m.Lx << std::setw(10) << m.k_hat << std::setw(14)
+              << m.lambda_hat.real() << std::setw(14) << m.lambda_hat.imag() << std::setw(15)
+              << m.growth_rate << std::setw(15) << m.phase_speed << "\n";
+  if (kc)
+    std::cout << "\n  cutoff: k_hat = " << *kc << ", Lx = " << cutoff_Lx
+              << " m (shorter waves decay)\n";
+  else
+    std::cout << "\n  no cutoff: every wavelength decays (F below critical)\n";
+}
+
+}  // namespace
+
+void add_dispersion_command(CLI::App& app) {
+  auto opts = std::make_shared<DispersionOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "dispersion", "exact linear growth rate and phase speed for domain lengths Lx (7.11)");
+  add_flow_options(*sub, opts->flow);
+  add_output_options(*sub, opts->output);
+  sub->add_option("--Lx", opts->Lx, "domain length(s) = wavelength(s) [m], > 0")
+      ->required()
+      ->check(positive());
+  sub->add_option("--theory", opts->theory, "linear theory {depthavg,depthavg-bagnold,twod}")
+      ->check(CLI::IsMember({"depthavg", "depthavg-bagnold", "twod"}))
+      ->capture_default_str();
+  sub->callback([opts] { run_dispersion(*opts); });
+}
+
+}  // namespace granbench::cli

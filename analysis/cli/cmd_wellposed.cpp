@@ -1,0 +1,96 @@
+// granbench wellposed: where a mu(I) curve keeps the incompressible equations well posed
+// (Barker & Gray 2017, §3-§4, figures 1, 2 and 7): neutral points (roots of C(I), (3.9)), the
+// well-posed intervals of I, A_- of the regularised curve (6.4) and its largest well-posed I.
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "wellposedness_figures.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+struct WellposedOptions {
+  FlowOptions flow;
+  OutputOptions output;
+};
+
+nlohmann::json opt_json(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+void run_wellposed(const WellposedOptions& o) {
+  const MuCurve curve = o.flow.make_curve();
+  const WellPosednessFigures fig = well_posedness_figures(curve);
+  const WellPosedness& w = fig.analysis;
+
+  if (!o.output.out.empty() || !o.output.plot.empty()) {
+    const std::string h5 = !o.output.out.empty() ? o.output.out : o.output.plot + ".data.h5";
+    {
+      H5Writer out(h5);
+      write_well_posedness_figures(out, fig);
+      out.attribute("/", "curve", std::string(curve_name(curve.kind())));
+      out.close();
+    }
+    if (!o.output.plot.empty()) {
+      run_plot_script("wellposed.py", h5, o.output.plot);
+      if (o.output.out.empty()) std::filesystem::remove(h5);
+    }
+  }
+
+  nlohmann::json intervals = nlohmann::json::array();
+  for (auto [lo, hi] : w.intervals) intervals.push_back({lo, hi});
+  const bool has_low_branch = curve.junction_I() > 0.0;
+  if (o.output.json) {
+    nlohmann::json j;
+    j["curve"] = curve_name(curve.kind());
+    j["I1N"] = opt_json(w.I1N);
+    j["I2N"] = opt_json(w.I2N);
+    j["neutral_points"] = w.neutral;
+    j["well_posed_intervals"] = intervals;
+    j["A_minus"] = has_low_branch ? nlohmann::json(curve.A_minus()) : nlohmann::json(nullptr);
+    j["I_max_wellposed"] = w.I_max_wellposed;
+    j["I_max_bound"] = fig.I_max > 0.0 ? nlohmann::json(fig.I_max) : nlohmann::json(nullptr);
+    print_json(j);
+    return;
+  }
+  auto show = [](const std::optional<double>& v) {
+    std::ostringstream s;
+    if (v) s << std::setprecision(7) << *v;
+    else s << "none";
+    return s.str();
+  };
+  std::cout << "Well-posedness of the " << curve_name(curve.kind()) << " curve (C(I) of (3.9))\n"
+            << "  lower neutral point I1N      " << show(w.I1N)
+            << (has_low_branch ? "   (junction of the low-I branch)" : "") << "\n"
+            << "  upper neutral point I2N      " << show(w.I2N) << "\n";
+  if (has_low_branch)
+    std::cout << "  A_- of (5.3)/(6.4)           " << std::setprecision(7) << curve.A_minus()
+              << "\n";
+  std::cout << "  well-posed intervals of I   ";
+  for (auto [lo, hi] : w.intervals) std::cout << " [" << lo << ", " << hi << "]";
+  if (w.intervals.empty()) std::cout << " none";
+  std::cout << "\n  largest well-posed I         " << w.I_max_wellposed << "\n";
+  if (fig.I_max > 0.0)
+    std::cout << "  I_max bound of §4            " << fig.I_max << "\n";
+  if (!o.output.out.empty()) std::cout << "  data written to " << o.output.out << "\n";
+  if (!o.output.plot.empty()) std::cout << "  figure written to " << o.output.plot << "\n";
+}
+
+}  // namespace
+
+void add_wellposed_command(CLI::App& app) {
+  auto opts = std::make_shared<WellposedOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "wellposed", "neutral points and well-posed ranges of I for a mu(I) curve (§3-§4)");
+  add_flow_options(*sub, opts->flow, /*add_slope=*/false);
+  add_output_options(*sub, opts->output);
+  sub->callback([opts] { run_wellposed(*opts); });
+}
+
+}  // namespace granbench::cli

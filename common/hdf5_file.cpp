@@ -1,0 +1,178 @@
+// H5Writer: HDF5 output written to "<path>.partial" and renamed into place on close().
+#include "hdf5_file.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <numeric>
+#include <stdexcept>
+
+namespace granbench {
+
+namespace {
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5: failed to " + what);
+}
+
+std::vector<hsize_t> shape(std::size_t n, const std::vector<std::size_t>& dims) {
+  if (dims.empty()) return {static_cast<hsize_t>(n)};
+  std::size_t total = std::accumulate(dims.begin(), dims.end(), std::size_t{1},
+                                      std::multiplies<>());
+  if (total != n) throw std::invalid_argument("HDF5: dataset dims do not match the data size");
+  return {dims.begin(), dims.end()};
+}
+
+template <class T>
+void write_dataset(hid_t file, const std::string& name, std::span<const T> data,
+                   const std::vector<std::size_t>& dims, hid_t type) {
+  const auto hdims = shape(data.size(), dims);
+  hid_t space = H5Screate_simple(static_cast<int>(hdims.size()), hdims.data(), nullptr);
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  hid_t set = H5Dcreate2(file, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  if (set < 0) {
+    H5Sclose(space);
+    throw std::runtime_error("HDF5: cannot create dataset " + name);
+  }
+  herr_t st = data.empty() ? 0 : H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+  H5Dclose(set);
+  H5Sclose(space);
+  check(st, "write " + name);
+}
+
+}  // namespace
+
+H5Writer::H5Writer(std::string path) : path_(std::move(path)), partial_(path_ + ".partial") {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by exceptions instead
+  file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file_ < 0) throw std::runtime_error("cannot create HDF5 file " + partial_);
+}
+
+H5Writer::~H5Writer() {
+  if (!closed_) {
+    if (file_ >= 0) H5Fclose(file_);
+    std::remove(partial_.c_str());
+  }
+}
+
+void H5Writer::create_group(const std::string& group) {
+  if (H5Lexists(file_, group.c_str(), H5P_DEFAULT) > 0) return;
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  hid_t g = H5Gcreate2(file_, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  if (g < 0) throw std::runtime_error("HDF5: cannot create group " + group);
+  H5Gclose(g);
+}
+
+void H5Writer::write(const std::string& name, std::span<const double> data,
+                     const std::vector<std::size_t>& dims) {
+  write_dataset(file_, name, data, dims, H5T_NATIVE_DOUBLE);
+}
+
+void H5Writer::write(const std::string& name, std::span<const std::int64_t> data,
+                     const std::vector<std::size_t>& dims) {
+  write_dataset(file_, name, data, dims, H5T_NATIVE_INT64);
+}
+
+void H5Writer::attribute(const std::string& object, const std::string& key, double value) {
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (H5Aexists_by_name(file_, object.c_str(), key.c_str(), H5P_DEFAULT) > 0)
+    H5Adelete_by_name(file_, object.c_str(), key.c_str(), H5P_DEFAULT);
+  hid_t attr = H5Acreate_by_name(file_, object.c_str(), key.c_str(), H5T_NATIVE_DOUBLE, space,
+                                 H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = attr < 0 ? -1 : H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  check(st, "write attribute " + key + " on " + object);
+}
+
+void H5Writer::attribute(const std::string& object, const std::string& key,
+                         const std::string& value) {
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, value.empty() ? 1 : value.size());
+  hid_t space = H5Screate(H5S_SCALAR);
+  if (H5Aexists_by_name(file_, object.c_str(), key.c_str(), H5P_DEFAULT) > 0)
+    H5Adelete_by_name(file_, object.c_str(), key.c_str(), H5P_DEFAULT);
+  hid_t attr = H5Acreate_by_name(file_, object.c_str(), key.c_str(), type, space, H5P_DEFAULT,
+                                 H5P_DEFAULT, H5P_DEFAULT);
+  const char* text = value.empty() ? "" : value.c_str();
+  herr_t st = attr < 0 ? -1 : H5Awrite(attr, type, text);
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+  check(st, "write attribute " + key + " on " + object);
+}
+
+void H5Writer::close() {
+  if (closed_) return;
+  check(H5Fclose(file_), "close " + partial_);
+  file_ = -1;
+  std::filesystem::rename(partial_, path_);
+  closed_ = true;
+}
+
+void write_surface_series(H5Writer& out, const std::string& group, const SurfaceSeries& s) {
+  out.create_group(group);
+  out.write(group + "/x", s.x);
+  out.write(group + "/t", s.t);
+  out.write(group + "/h", s.h, {s.nt(), s.nx()});
+  if (!s.u_mean.empty()) out.write(group + "/u_mean", s.u_mean, {s.nt(), s.nx()});
+  out.attribute(group, "Lx", s.Lx);
+  out.attribute(group, "h0", s.h0);
+}
+
+std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
+                                    std::vector<std::size_t>* dims) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error("cannot open HDF5 file " + path);
+  hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  if (set < 0) {
+    H5Fclose(file);
+    throw std::runtime_error("no dataset " + name + " in " + path);
+  }
+  hid_t space = H5Dget_space(set);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> hd(static_cast<std::size_t>(std::max(rank, 0)));
+  H5Sget_simple_extent_dims(space, hd.data(), nullptr);
+  std::size_t n = 1;
+  for (auto v : hd) n *= v;
+  std::vector<double> data(n);
+  herr_t st = n ? H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) : 0;
+  H5Sclose(space);
+  H5Dclose(set);
+  H5Fclose(file);
+  check(st, "read " + name);
+  if (dims) dims->assign(hd.begin(), hd.end());
+  return data;
+}
+
+bool h5_has(const std::string& path, const std::string& name) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) return false;
+  const bool has = H5Lexists(file, name.c_str(), H5P_DEFAULT) > 0;
+  H5Fclose(file);
+  return has;
+}
+
+SurfaceSeries read_surface_series(const std::string& path, const std::string& group) {
+  SurfaceSeries s;
+  s.x = h5_read_doubles(path, group + "/x");
+  s.t = h5_read_doubles(path, group + "/t");
+  s.h = h5_read_doubles(path, group + "/h");
+  if (h5_has(path, group + "/u_mean")) s.u_mean = h5_read_doubles(path, group + "/u_mean");
+  // Lx and h0 are attributes; recover them from the grid and the data when reading.
+  const double dx = s.x.size() > 1 ? s.x[1] - s.x[0] : 0.0;
+  s.Lx = dx * static_cast<double>(s.x.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < s.x.size() && !s.h.empty(); ++i) sum += s.h[i];
+  s.h0 = s.x.empty() ? 0.0 : sum / static_cast<double>(s.x.size());
+  return s;
+}
+
+}  // namespace granbench

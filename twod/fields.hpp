@@ -1,0 +1,37 @@
+// The state of the 2D two-phase flow on the MAC grid (grid.hpp) and the material properties
+// derived from it each step (properties.cpp):
+//
+//   u, w   velocity components on faces [m/s]; w at k = 0 is the no-slip wall (always 0),
+//          w at k = nz the open top boundary (p = 0 there)
+//   p      pressure at cell centres [Pa]
+//   f      granular volume fraction (VOF colour function), 1 in grains, 0 in the light fluid
+//
+//   rho_u, rho_w   face densities rho = f rho_* phi + (1 - f) rho_l, f averaged to the face
+//   eta_c, eta_n   viscosities at cell centres and corners [Pa s] (mixing rule in properties)
+#pragma once
+
+#include <vector>
+
+#include "grid.hpp"
+
+namespace granbench::twod {
+
+struct Fields {
+  std::vector<double> u, w, p, f;
+  double t = 0.0;
+
+  explicit Fields(const Grid& g = Grid())
+      : u(g.cells(), 0.0), w(g.w_faces(), 0.0), p(g.cells(), 0.0), f(g.cells(), 0.0) {}
+};
+
+struct Properties {
+  std::vector<double> rho_u, rho_w;  // face densities (rho_w has nz + 1 rows)
+  std::vector<double> eta_c, eta_n;  // cell-centre and corner viscosities
+  std::vector<double> I_c;           // inertial number (2.8) at cell centres (diagnostic)
+
+  explicit Properties(const Grid& g = Grid())
+      : rho_u(g.cells()), rho_w(g.w_faces()), eta_c(g.cells()), eta_n(g.corners()),
+        I_c(g.cells()) {}
+};
+
+}  // namespace granbench::twod

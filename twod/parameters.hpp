@@ -1,0 +1,58 @@
+// Parameters of the 2D two-phase mu(I) solver (value types with defaults, passed by const ref).
+//
+// The regularisation constants of the granular viscosity (DESIGN.md §8) are case inputs and are
+// written into every output: the floor on |D|, the cap eta_max (2 Pa s as in Gerris' runs), the
+// floor eta_min, and the rule that mixes granular and light-fluid viscosities in interface cells.
+#pragma once
+
+#include "material.hpp"
+#include "mu_curves.hpp"
+
+namespace granbench::twod {
+
+// Viscosity in cells holding both phases (f = granular fraction):
+//   Arithmetic  eta = f eta_g + (1 - f) eta_l     (default: with rho = f rho_g + (1-f) rho_l the
+//               grains in a partly filled cell keep their kinematic viscosity eta_g/rho_g)
+//   Harmonic    1/eta = f/eta_g + (1 - f)/eta_l   (Gerris' main runs; the light phase dominates,
+//               so grains in interface cells move with the light fluid's viscosity. In this
+//               solver that lets a Bagnold layer at 24 deg develop a growing surface mode within
+//               ~1 s on a 16-cell-deep grid; measured, see tests/twod/test_steady_profiles.cpp)
+enum class ViscosityMixing { Harmonic, Arithmetic };
+
+// Symmetric positive-definite solver for the viscous and pressure systems (spd_solver.hpp).
+//   StaleCholesky  conjugate gradients preconditioned by an exact sparse Cholesky factorisation
+//                  of an earlier matrix, refreshed when the iteration count rises
+//   Direct         a fresh factorisation every solve
+//   Jacobi         conjugate gradients with a diagonal preconditioner
+enum class LinearSolverKind { StaleCholesky, Direct, Jacobi };
+
+struct Rheology {
+  Material material;
+  CurveKind curve = CurveKind::Regularised;
+  double h0_for_curve = 4e-3;  // only the Holyoake curve (6.1) depends on depth
+  double eta_max = 2.0;        // cap on the granular viscosity [Pa s]
+  double eta_min = 1e-3;       // floor on the granular viscosity [Pa s]
+  double D_min = 1e-6;         // floor on |D| [1/s]
+  double rho_light = 1.5;      // light-fluid density [kg m^-3]
+  double eta_light = 1e-3;     // light-fluid viscosity [Pa s]
+  ViscosityMixing mixing = ViscosityMixing::Arithmetic;
+  // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =
+  // newtonian_eta when > 0.
+  double newtonian_eta = 0.0;
+};
+
+struct SolverParams {
+  Rheology rheology;
+  double zeta = 0.0;           // slope angle [rad]
+  double cfl = 0.4;            // advective Courant number per direction (< 0.5 for the VOF)
+  double dt_max = 1e-3;        // [s]
+  double dt_initial = 1e-5;    // first step [s]
+  double dt_growth = 1.1;      // largest ratio dt_{n+1}/dt_n
+  double solver_tolerance = 1e-10;  // relative residual of the linear solves
+  LinearSolverKind linear_solver = LinearSolverKind::StaleCholesky;
+  double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]
+  bool advect_momentum = true;
+  bool advect_interface = true;
+};
+
+}  // namespace granbench::twod

@@ -1,0 +1,34 @@
+// The variable-density pressure projection (projection.cpp).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "fields.hpp"
+#include "grid.hpp"
+#include "parameters.hpp"
+#include "spd_solver.hpp"
+
+namespace granbench::twod {
+
+class Projection {
+ public:
+  Projection(const Grid& g, const SolverParams& params);
+  // Make (u*, w*) divergence free with the densities of props; u, w, p of s receive
+  // u^{n+1}, w^{n+1}, p^{n+1} = p^n + delta p. Returns the solver iterations.
+  int project(const std::vector<double>& u_star, const std::vector<double>& w_star,
+              const Properties& props, double dt, Fields& s);
+  const SolveStats& stats() const { return solver_.stats(); }
+
+ private:
+  Grid g_;
+  PatternedMatrix A_;
+  SpdSolver solver_;
+  Eigen::VectorXd b_, x_;
+};
+
+// Discrete divergence (u_{i+1} - u_i)/dx + (w_{k+1} - w_k)/dz of cell (i, k).
+double cell_divergence(const Grid& g, const std::vector<double>& u, const std::vector<double>& w,
+                       int i, int k);
+
+}  // namespace granbench::twod

@@ -1,0 +1,119 @@
+// Densities and viscosities of the granular / light-fluid mixture.
+//
+// Density: rho = f rho_* phi + (1 - f) rho_l, with f averaged from the two cells of a face.
+//
+// Granular viscosity (Barker & Gray 2017):
+//   I = 2 d |D| / sqrt(p / rho_*)                                         (2.8)
+//   eta_g = mu(I) p / (2 |D|)                                             (2.11)
+//   |D| = sqrt(D:D / 2) = sqrt((D_xx^2 + D_zz^2)/2 + D_xz^2)
+// regularised as DESIGN.md §8: p is clipped at 0 (eta_g = eta_min where p <= 0), |D| is
+// floored at D_min and eta_g is kept in [eta_min, eta_max].
+//
+// Locations on the MAC grid: D_xx, D_zz are exact at cell centres and D_xz = gamma/2 with
+// gamma = du/dz + dw/dx exact at corners. eta at a cell centre uses the corner gammas averaged
+// to the centre; eta at a corner uses the cell D_xx, D_zz averaged to the corner and p, f
+// averaged from the surrounding cells (p extrapolated linearly to the bed, p = 0 on the top).
+// Boundaries: no slip at the bed (ghost u = -u, so gamma = 2u/dz), du/dz = 0 at the top
+// (gamma = dw/dx there).
+//
+// Mixing in interface cells (Rheology::mixing, see parameters.hpp): arithmetic
+// eta = f eta_g + (1-f) eta_l (default), or harmonic 1/eta = f/eta_g + (1-f)/eta_l (Gerris' main
+// runs). f at a corner is the mean of its four cells.
+#include "properties.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace granbench::twod {
+
+ViscosityModel::ViscosityModel(const Rheology& r)
+    : r_(r), curve_(r.curve, r.material, r.h0_for_curve),
+      d_over_sqrt_rho_(2.0 * r.material.d * std::sqrt(r.material.rho_star)) {}
+
+double ViscosityModel::inertial_number(double p, double D) const {
+  if (p <= 0.0) return std::numeric_limits<double>::infinity();
+  return d_over_sqrt_rho_ * D / std::sqrt(p);  // (2.8): 2 d |D| / sqrt(p/rho_*)
+}
+
+double ViscosityModel::granular(double p, double D) const {
+  if (r_.newtonian_eta > 0.0) return r_.newtonian_eta;
+  if (p <= 0.0) return r_.eta_min;
+  const double Df = std::max(D, r_.D_min);
+  const double eta = curve_.mu(inertial_number(p, Df)) * p / (2.0 * Df);  // (2.11)
+  return std::clamp(eta, r_.eta_min, r_.eta_max);
+}
+
+double ViscosityModel::mix(double f, double eta_g) const {
+  if (f >= 1.0) return eta_g;
+  if (f <= 0.0) return r_.eta_light;
+  if (r_.mixing == ViscosityMixing::Arithmetic) return f * eta_g + (1.0 - f) * r_.eta_light;
+  return 1.0 / (f / eta_g + (1.0 - f) / r_.eta_light);
+}
+
+void update_densities(const Grid& g, const std::vector<double>& f, const Rheology& r,
+                      Properties& props) {
+  const double rg = r.material.bulk_density(), rl = r.rho_light;
+  auto rho = [&](double fr) { return fr * rg + (1.0 - fr) * rl; };
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i)
+      props.rho_u[g.at(i, k)] = rho(0.5 * (f[g.at(i - 1, k)] + f[g.at(i, k)]));
+  for (int k = 0; k <= g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) {
+      const double fb = f[g.at(i, std::max(k - 1, 0))], ft = f[g.at(i, std::min(k, g.nz - 1))];
+      props.rho_w[g.at(i, k)] = rho(0.5 * (fb + ft));
+    }
+}
+
+void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
+                      Properties& props) {
+  const int nx = g.nx, nz = g.nz;
+  const auto &u = s.u, &w = s.w, &p = s.p, &f = s.f;
+  // gamma = du/dz + dw/dx at the corners, with the bed and top conditions.
+  std::vector<double> gam(g.corners());
+  for (int k = 0; k <= nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) / g.dx;
+      double dudz;
+      if (k == 0)
+        dudz = 2.0 * u[g.at(i, 0)] / g.dz;
+      else if (k == nz)
+        dudz = 0.0;
+      else
+        dudz = (u[g.at(i, k)] - u[g.at(i, k - 1)]) / g.dz;
+      gam[g.at(i, k)] = dudz + dwdx;
+    }
+  std::vector<double> Dxx(g.cells()), Dzz(g.cells());
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t c = g.at(i, k);
+      Dxx[c] = (u[g.at(i + 1, k)] - u[c]) / g.dx;
+      Dzz[c] = (w[g.at(i, k + 1)] - w[c]) / g.dz;
+      const double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
+                                  gam[g.at(i + 1, k + 1)]);
+      const double D = std::sqrt(0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]) + Dxz * Dxz);
+      props.eta_c[c] = model.mix(f[c], model.granular(p[c], D));
+      props.I_c[c] = model.inertial_number(p[c], D);
+    }
+  for (int k = 0; k <= nz; ++k) {
+    const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t a = g.at(i - 1, kb), b = g.at(i, kb), c = g.at(i - 1, kt), d = g.at(i, kt);
+      const double dxx = 0.25 * (Dxx[a] + Dxx[b] + Dxx[c] + Dxx[d]);
+      const double dzz = 0.25 * (Dzz[a] + Dzz[b] + Dzz[c] + Dzz[d]);
+      const double dxz = 0.5 * gam[g.at(i, k)];
+      const double D = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
+      double pn;
+      if (k == 0)  // linear extrapolation of the two lowest rows to the bed
+        pn = 0.5 * (1.5 * (p[a] + p[b]) - 0.5 * (p[g.at(i - 1, 1)] + p[g.at(i, 1)]));
+      else if (k == nz)
+        pn = 0.0;  // p = 0 on the top boundary
+      else
+        pn = 0.25 * (p[a] + p[b] + p[c] + p[d]);
+      const double fn = 0.25 * (f[a] + f[b] + f[c] + f[d]);
+      props.eta_n[g.at(i, k)] = model.mix(fn, model.granular(pn, D));
+    }
+  }
+}
+
+}  // namespace granbench::twod

@@ -1,0 +1,37 @@
+// Material properties of the two-phase mixture from the volume fraction f and the flow
+// (properties.cpp): face densities and the mu(I) viscosity with its regularisation.
+#pragma once
+
+#include "fields.hpp"
+#include "grid.hpp"
+#include "mu_curves.hpp"
+#include "parameters.hpp"
+
+namespace granbench::twod {
+
+class ViscosityModel {
+ public:
+  explicit ViscosityModel(const Rheology& r);
+  // Inertial number (2.8) from the pressure (clipped at 0) and |D|; +inf where p <= 0.
+  double inertial_number(double p, double D) const;
+  // Granular viscosity (2.11) with p clipped at 0, |D| floored and eta in [eta_min, eta_max].
+  double granular(double p, double D) const;
+  // The mixture viscosity of a cell holding granular fraction f.
+  double mix(double f, double eta_g) const;
+  const MuCurve& curve() const { return curve_; }
+  const Rheology& rheology() const { return r_; }
+
+ private:
+  Rheology r_;
+  MuCurve curve_;
+  double d_over_sqrt_rho_;  // 2 d / sqrt(1/rho_*) prefactor pieces of (2.8)
+};
+
+// rho at the u- and w-faces from f (arithmetic average of the adjacent cells).
+void update_densities(const Grid& g, const std::vector<double>& f, const Rheology& r,
+                      Properties& props);
+// eta at cell centres and corners (and I at centres) from u, w, p and f.
+void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
+                      Properties& props);
+
+}  // namespace granbench::twod

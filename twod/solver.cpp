@@ -1,0 +1,111 @@
+// Time stepping of the 2D incompressible mu(I) equations (Barker & Gray 2017):
+//
+//   div u = 0                                                                (2.9)
+//   rho (du/dt + u . grad u) = -grad p + div(2 eta D) + rho g                (2.10)
+//   eta = mu(I) p / (2 |D|) in the grains, eta_l in the light fluid          (2.11)
+//
+// for a granular layer (rho = rho_* phi, f = 1) under a light Newtonian fluid (f = 0), with the
+// interface carried by the volume fraction f. Fractional step per time level n -> n+1:
+//
+//   f^{n+1}          = VOF(f^n, u^n, dt)                   split PLIC, Weymouth-Yue
+//   rho^{n+1}, eta   = properties(f^{n+1}, u^n, p^n)       eta lagged one step
+//   u*               : rho^{n+1}(u* - u^n)/dt = div(2 eta D(u*)) - grad p^n
+//                                               + rho^{n+1}(g - u^n . grad u^n)
+//   dp               : div(grad dp / rho^{n+1}) = div u* / dt
+//   u^{n+1} = u* - dt grad dp / rho^{n+1},   p^{n+1} = p^n + dp
+//
+// After each step the state is checked: a NaN or a speed above velocity_limit stops the run
+// with a DivergenceError naming the time, the place and the quantity.
+#include "solver.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "diagnostics.hpp"
+#include "momentum_advection.hpp"
+#include "time_step.hpp"
+
+namespace granbench::twod {
+
+Solver::Solver(const Grid& g, const SolverParams& params, Fields initial)
+    : g_(g), params_(params), model_(params.rheology), s_(std::move(initial)), props_(g),
+      viscous_(g, params), projection_(g, params) {
+  stats_.initial_volume = granular_volume(g_, s_.f);
+  update_densities(g_, s_.f, params_.rheology, props_);
+  update_viscosity(g_, s_, model_, props_);
+}
+
+void Solver::resume(long steps, double dt_last, double initial_volume) {
+  stats_.steps = steps;
+  stats_.dt_last = dt_last;
+  stats_.initial_volume = initial_volume;
+}
+
+double Solver::step(double dt_limit) {
+  double dt = choose_time_step(g_, s_, params_, stats_.dt_last);
+  if (stats_.dt_last <= 0.0) dt = std::min(dt, params_.dt_initial);
+  const bool last = dt_limit <= dt * (1.0 + 1e-9);
+  if (last) dt = dt_limit;
+  // 1. interface
+  if (params_.advect_interface)
+    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
+  // 2. properties at the new level (eta from u^n, p^n)
+  update_densities(g_, s_.f, params_.rheology, props_);
+  update_viscosity(g_, s_, model_, props_);
+  // 3. momentum predictor
+  if (params_.advect_momentum) {
+    momentum_advection(g_, s_, adv_u_, adv_w_);
+  } else {
+    adv_u_.assign(g_.cells(), 0.0);
+    adv_w_.assign(g_.w_faces(), 0.0);
+  }
+  stats_.viscous_iterations += viscous_.predict(s_, props_, adv_u_, adv_w_, dt, u_star_, w_star_);
+  // 4. projection
+  stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, s_);
+
+  s_.t += dt;
+  ++stats_.steps;
+  if (stats_.steps == 1 || dt < stats_.dt_min) stats_.dt_min = dt;
+  if (dt > stats_.dt_max) stats_.dt_max = dt;
+  if (!last) stats_.dt_last = dt;  // a shortened final step does not throttle the next one
+  check_health();
+  return dt;
+}
+
+void Solver::advance_to(double t_end) {
+  while (s_.t < t_end * (1.0 - 1e-14)) step(t_end - s_.t);
+}
+
+RunStatistics Solver::statistics() const {
+  RunStatistics r = stats_;
+  r.volume = granular_volume(g_, s_.f);
+  r.clipped_volume = vof_.clipped_volume * g_.cell_volume();
+  r.factorisations = viscous_.stats().factorisations + projection_.stats().factorisations;
+  double div = 0.0;
+  for (int k = 0; k < g_.nz; ++k)
+    for (int i = 0; i < g_.nx; ++i)
+      div = std::max(div, std::abs(cell_divergence(g_, s_.u, s_.w, i, k)));
+  r.max_divergence = div;
+  return r;
+}
+
+void Solver::check_health() const {
+  auto fail = [&](const char* what, double value, double x, double z) {
+    std::ostringstream m;
+    m << "diverged at t = " << s_.t << " s: " << what << " = " << value << " at x = " << x
+      << " m, z = " << z << " m (step " << stats_.steps << ")";
+    throw DivergenceError(m.str(), s_.t, x, z);
+  };
+  for (int k = 0; k < g_.nz; ++k)
+    for (int i = 0; i < g_.nx; ++i) {
+      const std::size_t c = g_.at(i, k);
+      const double u = s_.u[c], w = s_.w[g_.at(i, k + 1)];
+      if (!std::isfinite(u) || std::abs(u) > params_.velocity_limit) fail("u", u, i * g_.dx, g_.zc(k));
+      if (!std::isfinite(w) || std::abs(w) > params_.velocity_limit)
+        fail("w", w, g_.xc(i), (k + 1) * g_.dz);
+      if (!std::isfinite(s_.p[c])) fail("p", s_.p[c], g_.xc(i), g_.zc(k));
+      if (!std::isfinite(s_.f[c])) fail("f", s_.f[c], g_.xc(i), g_.zc(k));
+    }
+}
+
+}  // namespace granbench::twod

@@ -1,0 +1,76 @@
+// The 2D two-phase incompressible mu(I) solver: one time step is
+//   1. VOF advection of f by u^n                               (vof_advection.cpp)
+//   2. densities and viscosities at the new level              (properties.cpp)
+//   3. explicit advection, implicit viscous predictor          (momentum_advection, viscous_step)
+//   4. variable-density projection                             (projection.cpp)
+// with a CFL-limited step (time_step.cpp). See solver.cpp for the equations.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "fields.hpp"
+#include "grid.hpp"
+#include "parameters.hpp"
+#include "projection.hpp"
+#include "properties.hpp"
+#include "vof_advection.hpp"
+#include "viscous_step.hpp"
+
+namespace granbench::twod {
+
+// A diverged run: what, where and when.
+struct DivergenceError : std::runtime_error {
+  DivergenceError(const std::string& what, double t_, double x_, double z_)
+      : std::runtime_error(what), t(t_), x(x_), z(z_) {}
+  double t, x, z;
+};
+
+struct RunStatistics {
+  long steps = 0;
+  long viscous_iterations = 0, projection_iterations = 0;
+  long factorisations = 0;
+  double initial_volume = 0.0;   // granular volume at the start [m^2 per unit width]
+  double volume = 0.0;           // now
+  double clipped_volume = 0.0;   // volume touched by clipping f to [0, 1]
+  double dt_min = 0.0, dt_max = 0.0, dt_last = 0.0;
+  double max_divergence = 0.0;   // max |div u| after the last projection [1/s]
+  double mass_error() const {
+    return initial_volume > 0.0 ? (volume - initial_volume) / initial_volume : 0.0;
+  }
+};
+
+class Solver {
+ public:
+  Solver(const Grid& g, const SolverParams& params, Fields initial);
+  // Advance one step of at most dt_limit; returns the step taken. Throws DivergenceError.
+  double step(double dt_limit);
+  // Step until time t_end (exactly).
+  void advance_to(double t_end);
+
+  const Grid& grid() const { return g_; }
+  const Fields& state() const { return s_; }
+  Fields& mutable_state() { return s_; }
+  const Properties& properties() const { return props_; }
+  const SolverParams& params() const { return params_; }
+  const ViscosityModel& viscosity_model() const { return model_; }
+  RunStatistics statistics() const;
+  // Restore counters and the step size after a restart.
+  void resume(long steps, double dt_last, double initial_volume);
+
+ private:
+  void check_health() const;
+
+  Grid g_;
+  SolverParams params_;
+  ViscosityModel model_;
+  Fields s_;
+  Properties props_;
+  ViscousStep viscous_;
+  Projection projection_;
+  VofStats vof_;
+  std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
+  RunStatistics stats_;
+};
+
+}  // namespace granbench::twod

@@ -1,0 +1,25 @@
+// Advection of the granular volume fraction f by the face velocities (vof_advection.cpp).
+#pragma once
+
+#include <vector>
+
+#include "grid.hpp"
+
+namespace granbench::twod {
+
+struct VofStats {
+  double clipped_volume = 0.0;  // |volume| removed by clipping f to [0, 1] (should stay ~1e-16)
+};
+
+// One time step of directionally split PLIC advection with the Weymouth-Yue correction;
+// `x_first` alternates the sweep order from step to step. u, w are the (discretely
+// divergence-free) face velocities of the step.
+void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
+                            const std::vector<double>& w, double dt, bool x_first,
+                            std::vector<double>& f, VofStats& stats);
+
+// Youngs normal (pointing out of the fluid) of cell (i, k) in cell-unit coordinates.
+void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, double& m1,
+                   double& m2);
+
+}  // namespace granbench::twod

@@ -20,10 +20,13 @@ WellPosednessFigures well_posedness_figures(const MuCurve& curve) {
   f.analysis = analyse_well_posedness(curve);
   const double sqrt2 = std::sqrt(2.0);
   for (int i = 1; i <= kN; ++i) f.mu_grid.push_back(sqrt2 * i / kN);
+  // Figure 2 anchors the neutral curves at the Jop curve's neutral points: the paper takes Jop as
+  // correct in its well-posed range and asks which curves may continue it (§4).
+  const WellPosedness jop_points = analyse_well_posedness(jop);
   auto fill = [&](std::optional<double> anchor, std::vector<double>& plus,
                   std::vector<double>& minus) {
     if (!anchor) return;
-    const double mu_a = curve.mu(*anchor);
+    const double mu_a = jop.mu(*anchor);
     const auto cp = neutral_curve_through(*anchor, mu_a, +1);
     const auto cm = neutral_curve_through(*anchor, mu_a, -1);
     for (double m : f.mu_grid) {
@@ -31,9 +34,9 @@ WellPosednessFigures well_posedness_figures(const MuCurve& curve) {
       minus.push_back(cm.I_of_mu(m));
     }
   };
-  fill(f.analysis.I1N, f.I_plus_low, f.I_minus_low);
-  fill(f.analysis.I2N, f.I_plus_high, f.I_minus_high);
-  if (f.analysis.I2N) f.I_max = I_max_from(*f.analysis.I2N, curve.mu(*f.analysis.I2N));
+  fill(jop_points.I1N, f.I_plus_low, f.I_minus_low);
+  fill(jop_points.I2N, f.I_plus_high, f.I_minus_high);
+  if (jop_points.I2N) f.I_max = I_max_from(*jop_points.I2N, jop.mu(*jop_points.I2N));
   return f;
 }
 

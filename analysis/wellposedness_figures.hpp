@@ -16,12 +16,12 @@ struct WellPosednessFigures {
   std::vector<double> I;              // log-spaced grid
   std::vector<double> mu, C;          // chosen curve
   std::vector<double> mu_jop, C_jop;  // Jop curve, same material
-  // Neutral curves through the lower (I1N) and upper (I2N) neutral points of the chosen curve:
+  // Neutral curves through the lower (I1N) and upper (I2N) neutral points of the Jop curve:
   // mu grid in (0, sqrt(2)] and I_+^N(mu), I_-^N(mu).
   std::vector<double> mu_grid;
   std::vector<double> I_plus_low, I_minus_low, I_plus_high, I_minus_high;
   WellPosedness analysis;
-  double I_max = 0.0;  // §4 bound from the upper neutral point (0 when there is none)
+  double I_max = 0.0;  // §4 bound from Jop's upper neutral point
 };
 
 WellPosednessFigures well_posedness_figures(const MuCurve& curve);

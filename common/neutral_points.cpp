@@ -1,6 +1,7 @@
 // Neutral inertial numbers (roots of C(I), (3.9)) and the neutral curves (4.2)-(4.5).
 #include "neutral_points.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ill_posedness.hpp"
@@ -64,17 +65,17 @@ WellPosedness analyse_well_posedness(const MuCurve& curve) {
 }
 
 double neutral_f_plus(double mu) {
-  const double s = std::sqrt(4.0 - 2.0 * mu * mu);
+  const double s = std::sqrt(std::max(0.0, 4.0 - 2.0 * mu * mu));  // real for mu <= sqrt 2
   return s / (2.0 * mu * mu) + std::log(mu) - 0.5 * std::log(s + 2.0) - 1.0 / (mu * mu);  // (4.4)
 }
 
 double neutral_f_minus(double mu) {
-  const double s = std::sqrt(4.0 - 2.0 * mu * mu);
+  const double s = std::sqrt(std::max(0.0, 4.0 - 2.0 * mu * mu));  // real for mu <= sqrt 2
   return -s / (2.0 * mu * mu) + 0.5 * std::log(s + 2.0) - 1.0 / (mu * mu);  // (4.5)
 }
 
 double neutral_slope(double mu, double I, int sign) {
-  const double s = std::sqrt(4.0 - 2.0 * mu * mu);
+  const double s = std::sqrt(std::max(0.0, 4.0 - 2.0 * mu * mu));  // real for mu <= sqrt 2
   return mu / (I * (16.0 + mu * mu)) * (8.0 + 2.0 * mu * mu + sign * 4.0 * s);  // (4.2)
 }
 

@@ -25,9 +25,8 @@ SteadyState steady_state(const MuCurve& curve, double zeta, double h0) {
     std::ostringstream msg;
     const double deg = 180.0 / std::numbers::pi;
     msg << "no steady uniform flow at angle " << zeta * deg << " deg for the "
-        << curve_name(curve.kind()) << " curve: steady flow needs "
-        << std::atan(curve.mu_min()) * deg << " < angle < " << std::atan(curve.mu_max()) * deg
-        << " deg";
+        << curve_name(curve.kind()) << " curve; valid range ("
+        << std::atan(curve.mu_min()) * deg << ", " << std::atan(curve.mu_max()) * deg << ") deg";
     throw CurveRangeError(msg.str());
   }
   const double c = std::cos(zeta);

@@ -54,6 +54,18 @@ CLI::Validator open_range(double lo, double hi) {
       "in " + range, "open_range");
 }
 
+CLI::Validator one_of(const std::vector<std::string>& values) {
+  std::string list;
+  for (const auto& v : values) list += (list.empty() ? "" : ",") + v;
+  return CLI::Validator(
+      [values, list](std::string& text) -> std::string {
+        for (const auto& v : values)
+          if (v == text) return {};
+        return "'" + text + "' is not allowed; valid values {" + list + "}";
+      },
+      "{" + list + "}", "one_of");
+}
+
 CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
 
 MuCurve FlowOptions::make_curve() const { return MuCurve(curve_kind(), material, h0); }
@@ -62,7 +74,7 @@ void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
   std::string names;
   for (const auto& n : all_curve_names()) names += (names.empty() ? "" : ",") + n;
   app.add_option("--curve", o.curve, "mu(I) curve {" + names + "}")
-      ->check(CLI::IsMember(all_curve_names()))
+      ->check(one_of(all_curve_names()))
       ->capture_default_str();
   if (add_slope) {
     app.add_option("--angle", o.angle_deg, "slope angle zeta [deg], in (0, 90)")

@@ -152,7 +152,7 @@ void add_dispersion_command(CLI::App& app) {
       ->required()
       ->check(positive());
   sub->add_option("--theory", opts->theory, "linear theory {depthavg,depthavg-bagnold,twod}")
-      ->check(CLI::IsMember({"depthavg", "depthavg-bagnold", "twod"}))
+      ->check(one_of({"depthavg", "depthavg-bagnold", "twod"}))
       ->capture_default_str();
   sub->callback([opts] { run_dispersion(*opts); });
 }

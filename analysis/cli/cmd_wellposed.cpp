@@ -77,7 +77,7 @@ void run_wellposed(const WellposedOptions& o) {
   if (w.intervals.empty()) std::cout << " none";
   std::cout << "\n  largest well-posed I         " << w.I_max_wellposed << "\n";
   if (fig.I_max > 0.0)
-    std::cout << "  I_max bound of §4            " << fig.I_max << "\n";
+    std::cout << "  I_max of §4 (from Jop's I2N) " << fig.I_max << "\n";
   if (!o.output.out.empty()) std::cout << "  data written to " << o.output.out << "\n";
   if (!o.output.plot.empty()) std::cout << "  figure written to " << o.output.plot << "\n";
 }

@@ -1,0 +1,36 @@
+// H5Writer: round trip of a SurfaceSeries, and no file under the real name unless closed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "hdf5_file.hpp"
+
+using namespace granbench;
+
+TEST(Hdf5File, SurfaceSeriesRoundTrip) {
+  const std::string path = std::filesystem::temp_directory_path() / "granbench_test_series.h5";
+  SurfaceSeries s = SurfaceSeries::uniform_grid(0.08, 4, 4e-3);
+  s.append(0.0, std::vector<double>{1, 2, 3, 4});
+  s.append(0.5, std::vector<double>{5, 6, 7, 8});
+  {
+    H5Writer out(path);
+    write_surface_series(out, "depthavg", s);
+    out.close();
+  }
+  const SurfaceSeries r = read_surface_series(path, "depthavg");
+  EXPECT_EQ(r.h, s.h);
+  EXPECT_EQ(r.t, s.t);
+  EXPECT_NEAR(r.Lx, 0.08, 1e-15);
+  std::filesystem::remove(path);
+}
+
+TEST(Hdf5File, UnclosedWriterLeavesNoFile) {
+  const std::string path = std::filesystem::temp_directory_path() / "granbench_test_partial.h5";
+  std::filesystem::remove(path);
+  {
+    H5Writer out(path);
+    out.write("a", std::vector<double>{1.0});
+  }  // destroyed without close(), as when a run fails
+  EXPECT_FALSE(std::filesystem::exists(path));
+  EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+}

@@ -1,0 +1,256 @@
+// The CVODE glue (BDF + SPGMR + coloured band preconditioner). See cvode_integrator.hpp.
+#include "cvode_integrator.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+#include <sunmatrix/sunmatrix_band.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace granbench::depthavg {
+
+namespace {
+
+// Groups of cells whose stencils (j-r .. j+r) do not overlap on the periodic grid: any two cells
+// of a group are at cyclic distance >= 2r+1. Greedy, in index order.
+std::vector<std::vector<std::size_t>> colour_cells(std::size_t nx, std::size_t r) {
+  const std::size_t sep = 2 * r + 1;
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<bool> done(nx, false);
+  std::size_t remaining = nx;
+  while (remaining > 0) {
+    std::vector<std::size_t> g;
+    for (std::size_t c = 0; c < nx; ++c) {
+      if (done[c]) continue;
+      const bool fits = std::all_of(g.begin(), g.end(), [&](std::size_t o) {
+        const std::size_t d = c - o;  // c > o
+        return std::min(d, nx - d) >= sep;
+      });
+      if (fits) g.push_back(c);
+    }
+    for (std::size_t c : g) done[c] = true;
+    remaining -= g.size();
+    groups.push_back(std::move(g));
+  }
+  return groups;
+}
+
+}  // namespace
+
+struct CvodeIntegrator::Impl {
+  const Rhs& rhs;
+  std::size_t n;
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, atol = nullptr, constraints = nullptr, ftmp = nullptr, ytmp = nullptr,
+           ewt = nullptr, ele = nullptr;
+  void* mem = nullptr;
+  SUNLinearSolver krylov = nullptr, band_ls = nullptr;
+  SUNMatrix J = nullptr, P = nullptr;
+  sunindextype bw = 0;  // upper = lower half-bandwidth in components
+  std::vector<std::vector<std::size_t>> groups;
+  long precond_rhs_evals = 0;
+  std::string last_error;
+  double t = 0.0;
+
+  Impl(const Rhs& r) : rhs(r), n(r.size()) {}
+  ~Impl() {
+    if (mem) CVodeFree(&mem);
+    if (krylov) SUNLinSolFree(krylov);
+    if (band_ls) SUNLinSolFree(band_ls);
+    if (J) SUNMatDestroy(J);
+    if (P) SUNMatDestroy(P);
+    for (N_Vector v : {y, atol, constraints, ftmp, ytmp, ewt, ele})
+      if (v) N_VDestroy(v);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+
+  std::span<double> span_of(N_Vector v) const { return {N_VGetArrayPointer(v), n}; }
+
+  // dU/dt = F(U); a recoverable error (1) when F is not finite, so CVODE retries a smaller step.
+  static int rhs_cb(sunrealtype, N_Vector yv, N_Vector fv, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    self->rhs(self->span_of(yv), self->span_of(fv));
+    const double* f = N_VGetArrayPointer(fv);
+    for (std::size_t i = 0; i < self->n; ++i)
+      if (!std::isfinite(f[i])) return 1;
+    return 0;
+  }
+
+  // J_band by coloured difference quotients about (y, fy), wrap-around entries lumped onto the
+  // diagonal cell (see the header); then P = I - gamma J_band, band LU.
+  static int psetup(sunrealtype, N_Vector yv, N_Vector fy, sunbooleantype jok,
+                    sunbooleantype* jcur, sunrealtype gamma, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    if (!jok) {
+      if (self->band_jacobian(yv, fy) != 0) return 1;
+      *jcur = SUNTRUE;
+    } else {
+      *jcur = SUNFALSE;
+    }
+    if (SUNMatCopy(self->J, self->P) != 0) return -1;
+    if (SUNMatScaleAddI(-gamma, self->P) != 0) return -1;
+    return SUNLinSolSetup(self->band_ls, self->P) == 0 ? 0 : 1;
+  }
+
+  static int psolve(sunrealtype, N_Vector, N_Vector, N_Vector r, N_Vector z, sunrealtype,
+                    sunrealtype, int, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    return SUNLinSolSolve(self->band_ls, self->P, z, r, 0.0) == 0 ? 0 : 1;
+  }
+
+  int band_jacobian(N_Vector yv, N_Vector fy) {
+    const std::size_t nx = rhs.nx(), r = Rhs::stencil_radius;
+    const double srur = std::sqrt(std::numeric_limits<double>::epsilon());
+    CVodeGetErrWeights(mem, ewt);
+    const double* yd = N_VGetArrayPointer(yv);
+    const double* f0 = N_VGetArrayPointer(fy);
+    const double* w = N_VGetArrayPointer(ewt);
+    double* yt = N_VGetArrayPointer(ytmp);
+    const double* ft = N_VGetArrayPointer(ftmp);
+    SUNMatZero(J);
+    std::vector<double> inc(nx);
+    for (const auto& group : groups) {
+      for (std::size_t a = 0; a < 2; ++a) {
+        std::copy(yd, yd + n, yt);
+        for (std::size_t c : group) {
+          const std::size_t i = 2 * c + a;
+          inc[c] = srur * std::max(std::fabs(yd[i]), 1.0 / w[i]);
+          yt[i] += inc[c];
+        }
+        if (rhs_cb(t, ytmp, ftmp, this) != 0) return 1;
+        ++precond_rhs_evals;
+        for (std::size_t c : group) {
+          const auto col = static_cast<sunindextype>(2 * c + a);
+          double* column = SUNBandMatrix_Column(J, col);
+          for (std::size_t k = 0; k <= 2 * r; ++k) {
+            const std::size_t cell = (c + nx + k - r) % nx;
+            for (std::size_t b = 0; b < 2; ++b) {
+              auto row = static_cast<sunindextype>(2 * cell + b);
+              const double v = (ft[row] - f0[row]) / inc[c];
+              if (row - col > bw || col - row > bw)  // wrap-around: lump onto the diagonal cell
+                row = static_cast<sunindextype>(2 * c + b);
+              SM_COLUMN_ELEMENT_B(column, row, col) += v;
+            }
+          }
+        }
+      }
+    }
+    return 0;
+  }
+
+  static void on_error(int, const char* module, const char* function, char* msg, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    self->last_error = std::string(module) + "/" + function + ": " + msg;
+  }
+};
+
+namespace {
+void check(int flag, const char* what) {
+  if (flag != 0) throw std::runtime_error(std::string("CVODE set-up failed in ") + what);
+}
+}  // namespace
+
+CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
+                                 const IntegratorParams& p, std::span<const double> abs_scale,
+                                 std::span<const double> positive_mask)
+    : impl_(std::make_unique<Impl>(rhs)) {
+  Impl& m = *impl_;
+  const auto N = static_cast<sunindextype>(m.n);
+  if (U0.size() != m.n || abs_scale.size() != m.n || positive_mask.size() != m.n)
+    throw std::invalid_argument("CvodeIntegrator: vector sizes differ from the right-hand side");
+  check(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
+  for (N_Vector* v : {&m.y, &m.atol, &m.constraints, &m.ftmp, &m.ytmp, &m.ewt, &m.ele}) {
+    *v = N_VNew_Serial(N, m.ctx);
+    if (!*v) throw std::runtime_error("CVODE: out of memory");
+  }
+  std::copy(U0.begin(), U0.end(), N_VGetArrayPointer(m.y));
+  auto at = m.span_of(m.atol);
+  auto cons = m.span_of(m.constraints);
+  for (std::size_t i = 0; i < m.n; ++i) {
+    at[i] = p.atol * abs_scale[i];
+    cons[i] = positive_mask[i] != 0.0 ? 2.0 : 0.0;  // 2: strictly positive
+  }
+  m.mem = CVodeCreate(CV_BDF, m.ctx);
+  if (!m.mem) throw std::runtime_error("CVODE: CVodeCreate failed");
+  check(CVodeSetErrHandlerFn(m.mem, &Impl::on_error, &m), "CVodeSetErrHandlerFn");
+  check(CVodeInit(m.mem, &Impl::rhs_cb, 0.0, m.y), "CVodeInit");
+  check(CVodeSVtolerances(m.mem, p.rtol, m.atol), "CVodeSVtolerances");
+  check(CVodeSetUserData(m.mem, &m), "CVodeSetUserData");
+  check(CVodeSetMaxNumSteps(m.mem, p.max_steps), "CVodeSetMaxNumSteps");
+  check(CVodeSetMaxOrd(m.mem, p.max_order), "CVodeSetMaxOrd");
+  check(CVodeSetConstraints(m.mem, m.constraints), "CVodeSetConstraints");
+
+  m.krylov = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 10, m.ctx);
+  if (!m.krylov) throw std::runtime_error("CVODE: SUNLinSol_SPGMR failed");
+  check(CVodeSetLinearSolver(m.mem, m.krylov, nullptr), "CVodeSetLinearSolver");
+  check(CVodeSetEpsLin(m.mem, p.eps_lin), "CVodeSetEpsLin");
+
+  m.bw = static_cast<sunindextype>(2 * Rhs::stencil_radius + 1);  // cell j+-2, both components
+  m.J = SUNBandMatrix(N, m.bw, m.bw, m.ctx);
+  m.P = SUNBandMatrix(N, m.bw, m.bw, m.ctx);
+  if (!m.J || !m.P) throw std::runtime_error("CVODE: SUNBandMatrix failed");
+  m.band_ls = SUNLinSol_Band(m.y, m.P, m.ctx);
+  if (!m.band_ls) throw std::runtime_error("CVODE: SUNLinSol_Band failed");
+  check(SUNLinSolInitialize(m.band_ls), "SUNLinSolInitialize");
+  m.groups = colour_cells(rhs.nx(), Rhs::stencil_radius);
+  check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
+}
+
+CvodeIntegrator::~CvodeIntegrator() = default;
+
+AdvanceResult CvodeIntegrator::advance_to(double t_out) {
+  Impl& m = *impl_;
+  AdvanceResult res;
+  sunrealtype t_reached = m.t;
+  const int flag = CVode(m.mem, t_out, m.y, &t_reached, CV_NORMAL);
+  m.t = t_reached;
+  res.t = t_reached;
+  if (flag < 0) {
+    res.ok = false;
+    res.message = m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag)
+                                       : m.last_error;
+    if (CVodeGetErrWeights(m.mem, m.ewt) == 0 && CVodeGetEstLocalErrors(m.mem, m.ele) == 0) {
+      const double* e = N_VGetArrayPointer(m.ele);
+      const double* w = N_VGetArrayPointer(m.ewt);
+      double worst = -1.0;
+      for (std::size_t i = 0; i < m.n; ++i)
+        if (std::fabs(e[i] * w[i]) > worst) {
+          worst = std::fabs(e[i] * w[i]);
+          res.worst = i;
+        }
+    }
+  }
+  return res;
+}
+
+std::span<const double> CvodeIntegrator::state() const { return impl_->span_of(impl_->y); }
+double CvodeIntegrator::time() const { return impl_->t; }
+
+CvodeStats CvodeIntegrator::stats() const {
+  const Impl& m = *impl_;
+  CvodeStats s;
+  CVodeGetNumSteps(m.mem, &s.steps);
+  CVodeGetNumRhsEvals(m.mem, &s.rhs_evals);
+  CVodeGetNumLinRhsEvals(m.mem, &s.rhs_evals_jtimes);
+  s.rhs_evals_preconditioner = m.precond_rhs_evals;
+  CVodeGetNumLinIters(m.mem, &s.linear_iterations);
+  CVodeGetNumPrecEvals(m.mem, &s.preconditioner_evals);
+  CVodeGetNumPrecSolves(m.mem, &s.preconditioner_solves);
+  CVodeGetNumNonlinSolvIters(m.mem, &s.nonlinear_iterations);
+  CVodeGetNumErrTestFails(m.mem, &s.error_test_failures);
+  CVodeGetNumNonlinSolvConvFails(m.mem, &s.nonlinear_convergence_failures);
+  CVodeGetLastOrder(m.mem, &s.last_order);
+  sunrealtype h = 0.0;
+  CVodeGetLastStep(m.mem, &h);
+  s.last_step = h;
+  return s;
+}
+
+}  // namespace granbench::depthavg

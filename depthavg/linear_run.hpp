@@ -1,0 +1,51 @@
+// A clean linear-regime measurement with the depth-averaged solver: seed the normal mode (7.10)
+// of the (chi-generalised) linearised equations (7.7)-(7.8) at a tiny amplitude, integrate with
+// unlimited central reconstruction and tight tolerances, and measure the growth rate and phase
+// speed of the seeded mode spectrally (analysis/spectral_growth.hpp), beside the exact relation
+// (7.11) (analysis/dispersion.hpp). One point of `granbench sweep` and of the accuracy tests.
+//
+// Run length: t_end = max(4 wave periods, 0.5 / |Re lambda|), capped at 5 s, unless given;
+// dt_out = min(period/16, t_end/40), so the phase unwraps (|c| dt_out < Lx/2).
+#pragma once
+
+#include <string>
+
+#include "dispersion.hpp"
+#include "params.hpp"
+#include "solver.hpp"
+#include "spectral_growth.hpp"
+
+namespace granbench::depthavg {
+
+struct LinearRunParams {
+  std::size_t nx = 128;
+  double rtol = 1e-8;
+  double atol_fraction = 1e-4;   // atol = atol_fraction * rtol * h0
+  double amplitude = 1e-3;       // of h, as a fraction of h0
+  int mode = 1;                  // wavelengths in the domain
+  double t_end = 0.0;            // 0: automatic
+  Reconstruction reconstruction = Reconstruction::Central;
+};
+
+struct LinearRunResult {
+  double Lx = 0.0;
+  DispersionMode exact;          // (7.11) with chi, at k = 2 pi mode / Lx
+  SpectralGrowth measured;
+  CvodeStats stats;
+  double wall_seconds = 0.0;
+  double t_end = 0.0;
+  double mass_error = 0.0;
+  bool ok = false;               // run completed
+  std::string message;
+  double growth_relative_error() const {
+    return std::fabs(measured.growth_rate - exact.growth_rate) / std::fabs(exact.growth_rate);
+  }
+  double speed_relative_error() const {
+    return std::fabs(measured.phase_speed - exact.phase_speed) / std::fabs(exact.phase_speed);
+  }
+};
+
+LinearRunResult linear_run(const SteadyState& base, const MuCurve& curve, double chi, double Lx,
+                           const LinearRunParams& p);
+
+}  // namespace granbench::depthavg

@@ -1,0 +1,53 @@
+// Parameters of the depth-averaged model (Barker & Gray 2017, (7.3)-(7.5)) and of its numerics:
+// the grid, the momentum shape factor chi (momentum flux chi h u^2 in (7.4); DESIGN.md §10), the
+// slope reconstruction, the CVODE tolerances and the run's output interval. Plain value structs
+// with defaults; the physical base state (slope, depth, curve) comes from common/steady_state.hpp.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace granbench::depthavg {
+
+// Slope reconstruction of the cell averages at the faces. Central is the unlimited centred slope
+// (second order, for clean linear-regime measurements); the limiters keep h positive and the
+// solution free of new extrema for nonlinear rollwaves.
+enum class Reconstruction { Central, Minmod, MC };
+std::string_view reconstruction_name(Reconstruction r);
+// "central", "minmod", "mc"; throws std::invalid_argument otherwise.
+Reconstruction parse_reconstruction(std::string_view name);
+
+struct SpaceParams {
+  double Lx = 0.08;            // domain length [m], periodic
+  std::size_t nx = 256;        // number of cells
+  double chi = 1.0;            // momentum shape factor: 1 the paper's, 5/4 Bagnold's
+  Reconstruction reconstruction = Reconstruction::Central;
+  bool viscous = true;         // the term d/dx(nu h^{3/2} du/dx) of (7.4)
+  double h_dry_fraction = 1e-6;  // depth (as a fraction of h0) below which u is desingularised
+};
+
+struct IntegratorParams {
+  double rtol = 1e-6;
+  double atol = 1e-10;         // absolute tolerance, scaled per component (h in m, hu in m^2/s)
+  long max_steps = 2000000;    // per output interval
+  int max_order = 5;           // BDF order limit
+  double eps_lin = 0.05;       // CVODE's linear-solver tolerance factor
+};
+
+enum class InitKind { Sine, Eigenmode };
+
+struct InitialParams {
+  InitKind kind = InitKind::Sine;
+  double a0 = 2e-4;            // perturbation amplitude of h [m] (7.2)
+  int mode = 1;                // number of wavelengths in the domain
+  double noise = 0.0;          // amplitude of random noise in h, as a fraction of h0
+  std::uint64_t seed = 1;
+};
+
+struct OutputParams {
+  double t_end = 10.0;         // [s]
+  double dt_out = 0.01;        // sampling interval of the SurfaceSeries [s]
+};
+
+}  // namespace granbench::depthavg

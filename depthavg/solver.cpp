@@ -1,0 +1,117 @@
+// Run loop of the depth-averaged solver: sampling, progress, interruption, divergence detection.
+#include "solver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace granbench::depthavg {
+
+namespace {
+
+double mass_of(const std::vector<double>& U, double dx) {
+  double m = 0.0;
+  for (std::size_t j = 0; 2 * j < U.size(); ++j) m += U[2 * j];
+  return m * dx;
+}
+
+const char* quantity_name(std::size_t component) { return component % 2 == 0 ? "h" : "h*u"; }
+
+// First sign of divergence in U: a non-finite value, a non-positive depth, or a depth beyond
+// 100 h0. Empty when the state looks sane.
+std::string check_state(const Rhs& rhs, std::span<const double> U, double t) {
+  const double h0 = rhs.base().h0;
+  for (std::size_t i = 0; i < U.size(); ++i) {
+    const bool is_h = i % 2 == 0;
+    const bool bad = !std::isfinite(U[i]) || (is_h && (U[i] <= 0.0 || U[i] > 100.0 * h0));
+    if (bad) {
+      std::ostringstream s;
+      s << "diverged at t = " << t << " s, x = " << rhs.x(i / 2) << " m: " << quantity_name(i)
+        << " = " << U[i];
+      return s.str();
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+Solver::Solver(const SteadyState& base, const MuCurve& curve, const SpaceParams& space,
+               const IntegratorParams& integrator)
+    : rhs_(base, curve, space), integrator_(integrator) {}
+
+RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
+                      const RunCallbacks& cb) const {
+  if (U0.size() != rhs_.size()) throw std::invalid_argument("Solver::run: wrong state size");
+  if (!(out.dt_out > 0.0) || !(out.t_end > 0.0))
+    throw std::invalid_argument("Solver::run: t_end and dt_out must be positive");
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t nx = rhs_.nx();
+  const double u0 = rhs_.base().u_mean, h0 = rhs_.base().h0;
+
+  // Absolute tolerances per component: atol [m] for h, atol * u0 [m^2/s] for q; h kept positive.
+  std::vector<double> scale(2 * nx), positive(2 * nx);
+  for (std::size_t j = 0; j < nx; ++j) {
+    scale[2 * j] = 1.0;
+    scale[2 * j + 1] = u0;
+    positive[2 * j] = 1.0;
+  }
+  CvodeIntegrator integ(rhs_, U0, integrator_, scale, positive);
+
+  RunResult res;
+  res.series = SurfaceSeries::uniform_grid(rhs_.space().Lx, nx, h0);
+  std::vector<double> h(nx), u(nx);
+  auto sample = [&](double t, std::span<const double> U) {
+    for (std::size_t j = 0; j < nx; ++j) {
+      h[j] = U[2 * j];
+      u[j] = rhs_.velocity(U[2 * j], U[2 * j + 1]);
+    }
+    res.series.append(t, h, u);
+  };
+  sample(0.0, U0);
+  res.mass_initial = mass_of(U0, rhs_.dx());
+
+  const auto n_samples =
+      static_cast<std::size_t>(std::ceil(out.t_end / out.dt_out - 1e-9));
+  for (std::size_t n = 1; n <= n_samples; ++n) {
+    const double t_out = std::min(static_cast<double>(n) * out.dt_out, out.t_end);
+    const AdvanceResult adv = integ.advance_to(t_out);
+    if (!adv.ok) {
+      std::ostringstream s;
+      s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message
+        << "); largest local error in " << quantity_name(adv.worst) << " at x = "
+        << rhs_.x(adv.worst / 2) << " m";
+      res.status = RunStatus::Diverged;
+      res.message = s.str();
+      break;
+    }
+    const std::string bad = check_state(rhs_, integ.state(), adv.t);
+    if (!bad.empty()) {
+      res.status = RunStatus::Diverged;
+      res.message = bad;
+      break;
+    }
+    sample(adv.t, integ.state());
+    if (cb.progress) cb.progress(adv.t, out.t_end);
+    if (cb.stop && cb.stop->load() && n < n_samples) {
+      res.status = RunStatus::Interrupted;
+      res.message = "interrupted at t = " + std::to_string(adv.t) + " s";
+      break;
+    }
+  }
+
+  const auto U = integ.state();
+  res.final_state.assign(U.begin(), U.end());
+  res.t_reached = integ.time();
+  res.mass_final = mass_of(res.final_state, rhs_.dx());
+  double q = 0.0;
+  for (std::size_t j = 0; j < nx; ++j) q += U[2 * j + 1];
+  res.flux_final = q / static_cast<double>(nx);
+  res.stats = integ.stats();
+  res.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+}  // namespace granbench::depthavg

@@ -19,12 +19,14 @@ namespace granbench::twod {
 //               ~1 s on a 16-cell-deep grid; measured, see tests/twod/test_steady_profiles.cpp)
 enum class ViscosityMixing { Harmonic, Arithmetic };
 
-// Symmetric positive-definite solver for the viscous and pressure systems (spd_solver.hpp).
-//   StaleCholesky  conjugate gradients preconditioned by an exact sparse Cholesky factorisation
-//                  of an earlier matrix, refreshed when the iteration count rises
-//   Direct         a fresh factorisation every solve
-//   Jacobi         conjugate gradients with a diagonal preconditioner
-enum class LinearSolverKind { StaleCholesky, Direct, Jacobi };
+// Preconditioner of the conjugate-gradient solves (spd_solver.hpp, pcg.hpp):
+//   Multigrid      geometric V-cycle with z-line smoothing (pressure only; the default there)
+//   LineRelaxation symmetric z-line Gauss-Seidel (the default for the viscous step)
+//   StaleCholesky  the exact sparse Cholesky factor of an earlier matrix, refreshed when the
+//                  iteration count rises
+//   Direct         a fresh Cholesky factorisation every solve
+//   Jacobi         the diagonal
+enum class LinearSolverKind { Multigrid, LineRelaxation, StaleCholesky, Direct, Jacobi };
 
 struct Rheology {
   Material material;
@@ -49,7 +51,8 @@ struct SolverParams {
   double dt_initial = 1e-5;    // first step [s]
   double dt_growth = 1.1;      // largest ratio dt_{n+1}/dt_n
   double solver_tolerance = 1e-10;  // relative residual of the linear solves
-  LinearSolverKind linear_solver = LinearSolverKind::StaleCholesky;
+  LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
+  LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;
   double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]
   bool advect_momentum = true;
   bool advect_interface = true;

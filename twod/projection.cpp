@@ -9,7 +9,13 @@
 // definite system  sum_faces c_f (dp_c - dp_nb) = -V div(u*)/dt,  c_f = area/(dist rho_f).
 // Boundaries: periodic in x; at the bed w = 0 (no correction, d(dp)/dz = 0); at the top
 // p = 0, so dp = 0 at z = Lz, half a cell above the last centre.
+// Solved by conjugate gradients preconditioned with geometric multigrid (pressure_multigrid.cpp,
+// matrix-free) or, on request, with an assembled matrix and one of the sparse preconditioners.
 #include "projection.hpp"
+
+#include <stdexcept>
+
+#include "pcg.hpp"
 
 namespace granbench::twod {
 
@@ -19,7 +25,20 @@ double cell_divergence(const Grid& g, const std::vector<double>& u, const std::v
 }
 
 Projection::Projection(const Grid& g, const SolverParams& params)
-    : g_(g), solver_(params.linear_solver, params.solver_tolerance) {}
+    : g_(g), kind_(params.pressure_solver), tol_(params.solver_tolerance),
+      solver_(params.pressure_solver, params.solver_tolerance) {
+  op_.nx = g.nx;
+  op_.nz = g.nz;
+  op_.cx.assign(g.cells(), 0.0);
+  op_.cz.assign(g.w_faces(), 0.0);
+  std::vector<std::vector<int>> lines;  // columns, for the line-relaxation option
+  for (int i = 0; i < g.nx; ++i) {
+    std::vector<int> line;
+    for (int k = 0; k < g.nz; ++k) line.push_back(i * g.nz + k);
+    lines.push_back(std::move(line));
+  }
+  solver_.set_lines(std::move(lines));
+}
 
 int Projection::project(const std::vector<double>& u_star, const std::vector<double>& w_star,
                         const Properties& props, double dt, Fields& s) {
@@ -27,40 +46,62 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   const int nx = g.nx, nz = g.nz, n = nx * nz;
   const double V = g.cell_volume();
   const double cx = g.dz / g.dx, cz = g.dx / g.dz;  // area / distance
+  // Unknown of cell (i, k): i nz + k (column by column, as the multigrid stores it).
+  auto id = [&](int i, int k) { return g.wrap(i) * nz + k; };
   b_.resize(n);
   x_.setZero(n);
-  A_.begin(n);
-  auto pair = [&](int a, int b, double c) {
-    A_.add(a, a, c);
-    A_.add(a, b, -c);
-    A_.add(b, b, c);
-    A_.add(b, a, -c);
-  };
   for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
+  int iterations = 0;
+  if (kind_ == LinearSolverKind::Multigrid) {
     for (int i = 0; i < nx; ++i) {
-      const int c = int(g.at(i, k));
-      b_[c] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
-      pair(int(g.at(i - 1, k)), c, cx / props.rho_u[c]);                // x-face (i, k)
-      if (k > 0) pair(int(g.at(i, k - 1)), c, cz / props.rho_w[c]);     // z-face (i, k)
-      if (k == nz - 1) A_.add(c, c, 2.0 * cz / props.rho_w[g.at(i, nz)]);  // dp = 0 at top
+      for (int k = 0; k < nz; ++k) op_.cx[op_.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
+      op_.cz[op_.zface(i, 0)] = 0.0;                                       // bed: no flux
+      for (int k = 1; k < nz; ++k) op_.cz[op_.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
+      op_.cz[op_.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];      // dp = 0 at top
     }
-  A_.end();
-  const int iterations = solver_.solve(A_.matrix(), b_, x_);
+    multigrid_.set_operator(op_);
+    iterations = pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
+                     [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+                       multigrid_.precondition(r, z);
+                     },
+                     b_, x_, tol_, 500);
+    if (iterations < 0) throw std::runtime_error("pressure multigrid-CG did not converge");
+    ++mg_stats_.solves;
+    mg_stats_.iterations += iterations;
+  } else {
+    A_.begin(n);
+    auto pair = [&](int a, int b, double c) {
+      A_.add(a, a, c);
+      A_.add(a, b, -c);
+      A_.add(b, b, c);
+      A_.add(b, a, -c);
+    };
+    for (int k = 0; k < nz; ++k)
+      for (int i = 0; i < nx; ++i) {
+        const int c = id(i, k);
+        pair(id(i - 1, k), c, cx / props.rho_u[g.at(i, k)]);                 // x-face (i, k)
+        if (k > 0) pair(id(i, k - 1), c, cz / props.rho_w[g.at(i, k)]);      // z-face (i, k)
+        if (k == nz - 1) A_.add(c, c, 2.0 * cz / props.rho_w[g.at(i, nz)]);  // dp = 0 at top
+      }
+    A_.end();
+    iterations = solver_.solve(A_.matrix(), b_, x_);
+  }
 
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
-      s.u[c] = u_star[c] - dt / props.rho_u[c] * (x_[c] - x_[g.at(i - 1, k)]) / g.dx;
-      s.p[c] += x_[c];
+      s.u[c] = u_star[c] - dt / props.rho_u[c] * (x_[id(i, k)] - x_[id(i - 1, k)]) / g.dx;
+      s.p[c] += x_[id(i, k)];
     }
   for (int i = 0; i < nx; ++i) {
     s.w[g.at(i, 0)] = 0.0;
     for (int k = 1; k < nz; ++k) {
       const std::size_t c = g.at(i, k);
-      s.w[c] = w_star[c] - dt / props.rho_w[c] * (x_[c] - x_[g.at(i, k - 1)]) / g.dz;
+      s.w[c] = w_star[c] - dt / props.rho_w[c] * (x_[id(i, k)] - x_[id(i, k - 1)]) / g.dz;
     }
     const std::size_t top = g.at(i, nz);
-    s.w[top] = w_star[top] - dt / props.rho_w[top] * (0.0 - x_[g.at(i, nz - 1)]) / (0.5 * g.dz);
+    s.w[top] = w_star[top] - dt / props.rho_w[top] * (0.0 - x_[id(i, nz - 1)]) / (0.5 * g.dz);
   }
   return iterations;
 }

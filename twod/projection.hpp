@@ -7,6 +7,7 @@
 #include "fields.hpp"
 #include "grid.hpp"
 #include "parameters.hpp"
+#include "pressure_multigrid.hpp"
 #include "spd_solver.hpp"
 
 namespace granbench::twod {
@@ -18,10 +19,17 @@ class Projection {
   // u^{n+1}, w^{n+1}, p^{n+1} = p^n + delta p. Returns the solver iterations.
   int project(const std::vector<double>& u_star, const std::vector<double>& w_star,
               const Properties& props, double dt, Fields& s);
-  const SolveStats& stats() const { return solver_.stats(); }
+  const SolveStats& stats() const {
+    return kind_ == LinearSolverKind::Multigrid ? mg_stats_ : solver_.stats();
+  }
 
  private:
   Grid g_;
+  LinearSolverKind kind_;
+  double tol_;
+  PoissonLevel op_;
+  PressureMultigrid multigrid_;
+  SolveStats mg_stats_;
   PatternedMatrix A_;
   SpdSolver solver_;
   Eigen::VectorXd b_, x_;

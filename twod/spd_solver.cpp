@@ -1,6 +1,8 @@
 // Fixed-pattern assembly and the preconditioned conjugate-gradient solves (see spd_solver.hpp).
 #include "spd_solver.hpp"
 
+#include "pcg.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -62,36 +64,22 @@ void SpdSolver::factorise(const SpMat& A) {
   ++stats_.factorisations;
 }
 
-int SpdSolver::pcg(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+int SpdSolver::run(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    int max_iterations) {
-  const double bnorm = b.norm();
-  if (bnorm == 0.0) {
-    x.setZero();
-    return 0;
+  auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { y.noalias() = A * v; };
+  switch (kind_) {
+    case LinearSolverKind::Jacobi:
+      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+        z = inv_diag_.cwiseProduct(r);
+      }, b, x, tol_, max_iterations);
+    case LinearSolverKind::LineRelaxation:
+      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+        line_.precondition(A, r, z);
+      }, b, x, tol_, max_iterations);
+    default:
+      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = llt_.solve(r); },
+                 b, x, tol_, max_iterations);
   }
-  auto precondition = [&](const Eigen::VectorXd& r) -> Eigen::VectorXd {
-    if (kind_ == LinearSolverKind::Jacobi) return inv_diag_.cwiseProduct(r);
-    return llt_.solve(r);
-  };
-  Eigen::VectorXd r = b - A * x;
-  const double target = tol_ * bnorm;
-  if (r.norm() <= target) return 0;
-  Eigen::VectorXd zv = precondition(r);
-  Eigen::VectorXd d = zv;
-  double rz = r.dot(zv);
-  Eigen::VectorXd q(b.size());
-  for (int it = 1; it <= max_iterations; ++it) {
-    q.noalias() = A * d;
-    const double alpha = rz / d.dot(q);
-    x.noalias() += alpha * d;
-    r.noalias() -= alpha * q;
-    if (r.norm() <= target) return it;
-    zv = precondition(r);
-    const double rz_new = r.dot(zv);
-    d = zv + (rz_new / rz) * d;
-    rz = rz_new;
-  }
-  return -1;
 }
 
 int SpdSolver::solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
@@ -100,18 +88,23 @@ int SpdSolver::solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& 
   switch (kind_) {
     case LinearSolverKind::Direct:
       factorise(A);
-      it = pcg(A, b, x, 50);  // one iteration with the exact factor; more polish round-off
+      it = run(A, b, x, 50);  // one iteration with the exact factor; more polish round-off
       break;
     case LinearSolverKind::Jacobi:
       inv_diag_ = A.diagonal().cwiseInverse();
-      it = pcg(A, b, x, 20 * int(b.size()));
+      it = run(A, b, x, 20 * int(b.size()));
+      break;
+    case LinearSolverKind::LineRelaxation:
+    case LinearSolverKind::Multigrid:  // (multigrid is matrix-free, in the projection)
+      if (!line_.ready()) line_.setup(A, lines_);
+      it = run(A, b, x, 2000);
       break;
     case LinearSolverKind::StaleCholesky:
       if (!factor_ready_) factorise(A);
-      it = pcg(A, b, x, 4 * refresh_);
+      it = run(A, b, x, 4 * refresh_);
       if (it < 0) {  // the old factor no longer fits: refactorise and solve again
         factorise(A);
-        it = pcg(A, b, x, 50);
+        it = run(A, b, x, 50);
       } else if (it > refresh_) {
         factor_ready_ = false;  // refresh before the next solve
       }

@@ -13,6 +13,8 @@
 //                  than `refresh_iterations`.
 //   Direct         factorise every solve (exact to round-off).
 //   Jacobi         conjugate gradients with the diagonal as preconditioner.
+//   LineRelaxation conjugate gradients with symmetric line Gauss-Seidel (line_relaxation.hpp);
+//                  the lines are given with set_lines().
 #pragma once
 
 #include <Eigen/Sparse>
@@ -20,11 +22,10 @@
 #include <cstddef>
 #include <vector>
 
+#include "line_relaxation.hpp"
 #include "parameters.hpp"
 
 namespace granbench::twod {
-
-using SpMat = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 
 class PatternedMatrix {
  public:
@@ -66,10 +67,12 @@ class SpdSolver {
   // Solve A x = b; x holds the initial guess on entry. Returns the PCG iterations used.
   int solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   const SolveStats& stats() const { return stats_; }
+  // The lines of the LineRelaxation preconditioner (row indices along each grid column).
+  void set_lines(std::vector<std::vector<int>> lines) { lines_ = std::move(lines); }
 
  private:
   void factorise(const SpMat& A);
-  int pcg(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_iterations);
+  int run(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x, int max_iterations);
 
   LinearSolverKind kind_;
   double tol_;
@@ -77,6 +80,8 @@ class SpdSolver {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt_;
   bool analysed_ = false, factor_ready_ = false;
   Eigen::VectorXd inv_diag_;
+  std::vector<std::vector<int>> lines_;
+  LineRelaxation line_;
   SolveStats stats_;
 };
 

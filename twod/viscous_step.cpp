@@ -23,7 +23,22 @@ namespace granbench::twod {
 ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
     : g_(g), gx_(params.rheology.material.g * std::sin(params.zeta)),
       gz_(-params.rheology.material.g * std::cos(params.zeta)),
-      solver_(params.linear_solver, params.solver_tolerance) {}
+      solver_(params.viscous_solver, params.solver_tolerance) {
+  // Lines for the line-relaxation preconditioner: the u's and the w's of each column.
+  const int nx = g.nx, nz = g.nz, nu = nx * nz;
+  std::vector<std::vector<int>> lines;
+  for (int i = 0; i < nx; ++i) {
+    std::vector<int> line;
+    for (int k = 0; k < nz; ++k) line.push_back(i * nz + k);
+    lines.push_back(std::move(line));
+  }
+  for (int i = 0; i < nx; ++i) {
+    std::vector<int> line;
+    for (int k = 1; k < nz; ++k) line.push_back(nu + i * (nz - 1) + (k - 1));
+    lines.push_back(std::move(line));
+  }
+  solver_.set_lines(std::move(lines));
+}
 
 int ViscousStep::predict(const Fields& s, const Properties& props,
                          const std::vector<double>& adv_u, const std::vector<double>& adv_w,
@@ -32,8 +47,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props,
   const int nx = g.nx, nz = g.nz;
   const int nu = nx * nz, n = nu + nx * (nz - 1);
   const double V = g.cell_volume();
-  auto iu = [&](int i, int k) { return int(g.at(i, k)); };
-  auto iw = [&](int i, int k) { return nu + (k - 1) * nx + g.wrap(i); };  // 1 <= k <= nz-1
+  // Unknowns column by column (the lines of the preconditioner are contiguous in memory).
+  auto iu = [&](int i, int k) { return g.wrap(i) * nz + k; };
+  auto iw = [&](int i, int k) { return nu + g.wrap(i) * (nz - 1) + (k - 1); };  // 1 <= k < nz
 
   b_.setZero(n);
   x_.resize(n);
@@ -97,7 +113,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props,
   A_.end();
 
   const int iterations = solver_.solve(A_.matrix(), b_, x_);
-  u_star.assign(x_.data(), x_.data() + nu);
+  u_star.resize(g.cells());
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) u_star[g.at(i, k)] = x_[iu(i, k)];
   w_star.assign(g.w_faces(), 0.0);
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) w_star[g.at(i, k)] = x_[iw(i, k)];

@@ -1,0 +1,42 @@
+// Geometric multigrid for the variable-coefficient pressure equation of the projection
+// (pressure_multigrid.cpp), used as the preconditioner of conjugate gradients.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace granbench::twod {
+
+// The cell-centred operator  (A p)_c = sum_faces c_f (p_c - p_nb) + c_top p_c  on an nx x nz
+// grid, periodic in x, no flux through the bed, Dirichlet (p = 0) half a cell above the top row.
+// Stored column by column (cell (i, k) at i nz + k) so that the z-lines are contiguous.
+struct PoissonLevel {
+  int nx = 0, nz = 0;
+  std::vector<double> cx;    // x-face coefficients, face left of cell (i, k) at i nz + k
+  std::vector<double> cz;    // z-face coefficients at i (nz + 1) + k, k = 0 (bed) .. nz (top)
+  int cell(int i, int k) const { return i * nz + k; }
+  int zface(int i, int k) const { return i * (nz + 1) + k; }
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+};
+
+class PressureMultigrid {
+ public:
+  // Set the finest operator; coarse levels are rebuilt from it.
+  void set_operator(const PoissonLevel& fine);
+  const PoissonLevel& fine() const { return levels_.front(); }
+  // z = M^{-1} r: one symmetric V(1,1)-cycle from z = 0.
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z);
+  int levels() const { return int(levels_.size()); }
+
+ private:
+  void vcycle(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
+  void line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                  bool forward) const;
+
+  std::vector<PoissonLevel> levels_;
+  std::vector<Eigen::VectorXd> res_, rhs_c_, x_c_;
+  Eigen::LDLT<Eigen::MatrixXd> coarsest_;
+  bool direct_coarsest_ = true;
+};
+
+}  // namespace granbench::twod

@@ -1,0 +1,56 @@
+// Checkpoint file layout (HDF5): /state/{u,w,p,f} as stored on the staggered grid, and the
+// scalars /state/{t, steps, dt_last, initial_volume, nx, nz, Lx, Lz} as one-element datasets;
+// /surface is the SurfaceSeries recorded so far. A restart continues bit-for-bit from here
+// (the linear-solver warm starts aside).
+#include "checkpoint.hpp"
+
+#include "diagnostics.hpp"
+#include "hdf5_file.hpp"
+
+namespace granbench::twod {
+
+void write_checkpoint(const std::string& path, const Solver& solver, const SurfaceSeries& series) {
+  const Grid& g = solver.grid();
+  const Fields& s = solver.state();
+  const RunStatistics st = solver.statistics();
+  H5Writer out(path);
+  out.write("/state/u", s.u);
+  out.write("/state/w", s.w);
+  out.write("/state/p", s.p);
+  out.write("/state/f", s.f);
+  auto scalar = [&](const char* name, double v) {
+    out.write(std::string("/state/") + name, std::span<const double>(&v, 1));
+  };
+  scalar("t", s.t);
+  scalar("steps", double(st.steps));
+  scalar("dt_last", st.dt_last);
+  scalar("initial_volume", st.initial_volume);
+  scalar("nx", g.nx);
+  scalar("nz", g.nz);
+  scalar("Lx", g.Lx);
+  scalar("Lz", g.Lz);
+  if (series.nt() > 0) write_surface_series(out, "/surface", series);
+  out.close();
+}
+
+Checkpoint read_checkpoint(const std::string& path) {
+  auto scalar = [&](const char* name) { return h5_read_doubles(path, std::string("/state/") + name).at(0); };
+  Checkpoint c;
+  c.grid = Grid(int(scalar("nx")), int(scalar("nz")), scalar("Lx"), scalar("Lz"));
+  c.state = Fields(c.grid);
+  c.state.u = h5_read_doubles(path, "/state/u");
+  c.state.w = h5_read_doubles(path, "/state/w");
+  c.state.p = h5_read_doubles(path, "/state/p");
+  c.state.f = h5_read_doubles(path, "/state/f");
+  c.state.t = scalar("t");
+  c.steps = long(scalar("steps"));
+  c.dt_last = scalar("dt_last");
+  c.initial_volume = scalar("initial_volume");
+  if (c.state.u.size() != c.grid.cells() || c.state.w.size() != c.grid.w_faces() ||
+      c.state.p.size() != c.grid.cells() || c.state.f.size() != c.grid.cells())
+    throw std::runtime_error("checkpoint " + path + ": field sizes do not match its grid");
+  if (h5_has(path, "/surface/h")) c.series = read_surface_series(path, "/surface");
+  return c;
+}
+
+}  // namespace granbench::twod

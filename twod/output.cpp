@@ -1,0 +1,119 @@
+// HDF5 snapshots and their XDMF index. Fields are averaged to cell centres (u from its two
+// x-faces, w from its two z-faces) and stored [nz][nx], with x and z node coordinates, so that
+// the XDMF "2DRectMesh" (VXVY geometry) with cell-centred attributes describes them exactly.
+// The XDMF file is a temporal collection of one grid per snapshot, each pointing into the HDF5
+// file as "file.h5:/snapshots/NNNN/<field>".
+#include "output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "diagnostics.hpp"
+
+namespace granbench::twod {
+
+void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
+                      const SolverParams& p) {
+  out.create_group(group);
+  const Rheology& r = p.rheology;
+  const Material& m = r.material;
+  auto a = [&](const char* key, double v) { out.attribute(group, key, v); };
+  a("nx", g.nx);
+  a("nz", g.nz);
+  a("Lx", g.Lx);
+  a("Lz", g.Lz);
+  a("angle_deg", p.zeta * 180.0 / std::numbers::pi);
+  out.attribute(group, "curve", std::string(curve_name(r.curve)));
+  a("mu_s", m.mu_s);
+  a("mu_d", m.mu_d);
+  a("I0", m.I0);
+  a("d", m.d);
+  a("phi", m.phi);
+  a("rho_star", m.rho_star);
+  a("g", m.g);
+  a("mu_inf", m.mu_inf);
+  a("alpha", m.alpha);
+  a("eta_max", r.eta_max);
+  a("eta_min", r.eta_min);
+  a("D_min", r.D_min);
+  a("rho_light", r.rho_light);
+  a("eta_light", r.eta_light);
+  out.attribute(group, "viscosity_mixing",
+                std::string(r.mixing == ViscosityMixing::Harmonic ? "harmonic" : "arithmetic"));
+  a("cfl", p.cfl);
+  a("dt_max", p.dt_max);
+  a("solver_tolerance", p.solver_tolerance);
+}
+
+SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,
+                               const Grid& g)
+    : out_(out), h5_name_(std::move(h5_file_name)), xdmf_path_(std::move(xdmf_path)), g_(g) {
+  std::vector<double> xn(g.nx + 1), zn(g.nz + 1);
+  for (int i = 0; i <= g.nx; ++i) xn[i] = i * g.dx;
+  for (int k = 0; k <= g.nz; ++k) zn[k] = k * g.dz;
+  out_.write("/snapshots/x_nodes", xn);
+  out_.write("/snapshots/z_nodes", zn);
+}
+
+void SnapshotWriter::write(const Solver& solver) {
+  const Grid& g = g_;
+  const Fields& s = solver.state();
+  const Properties& props = solver.properties();
+  char name[64];
+  std::snprintf(name, sizeof name, "/snapshots/%04zu", times_.size());
+  const std::string grp = name;
+  std::vector<double> uc(g.cells()), wc(g.cells());
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) {
+      uc[g.at(i, k)] = 0.5 * (s.u[g.at(i, k)] + s.u[g.at(i + 1, k)]);
+      wc[g.at(i, k)] = 0.5 * (s.w[g.at(i, k)] + s.w[g.at(i, k + 1)]);
+    }
+  const std::vector<std::size_t> dims = {std::size_t(g.nz), std::size_t(g.nx)};
+  std::vector<double> I = props.I_c;
+  for (double& v : I)
+    if (!std::isfinite(v)) v = std::nan("");  // p <= 0: I undefined
+  out_.write(grp + "/u", uc, dims);
+  out_.write(grp + "/w", wc, dims);
+  out_.write(grp + "/p", s.p, dims);
+  out_.write(grp + "/f", s.f, dims);
+  out_.write(grp + "/I", I, dims);
+  out_.write(grp + "/eta", props.eta_c, dims);
+  out_.write(grp + "/C", ill_posedness_field(props.I_c, solver.viscosity_model().curve()), dims);
+  out_.attribute(grp, "t", s.t);
+  times_.push_back(s.t);
+}
+
+void SnapshotWriter::finish() const {
+  const std::string partial = xdmf_path_ + ".partial";
+  {
+    std::ofstream x(partial);
+    const int nx = g_.nx, nz = g_.nz;
+    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+      << "  <Grid Name=\"twod\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (std::size_t n = 0; n < times_.size(); ++n) {
+      char grp[32];
+      std::snprintf(grp, sizeof grp, "/snapshots/%04zu", n);
+      x << "   <Grid Name=\"t" << n << "\" GridType=\"Uniform\">\n"
+        << "    <Time Value=\"" << times_[n] << "\"/>\n"
+        << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"" << nz + 1 << " " << nx + 1
+        << "\"/>\n    <Geometry GeometryType=\"VXVY\">\n"
+        << "     <DataItem Dimensions=\"" << nx + 1 << "\" NumberType=\"Float\" Precision=\"8\" "
+        << "Format=\"HDF\">" << h5_name_ << ":/snapshots/x_nodes</DataItem>\n"
+        << "     <DataItem Dimensions=\"" << nz + 1 << "\" NumberType=\"Float\" Precision=\"8\" "
+        << "Format=\"HDF\">" << h5_name_ << ":/snapshots/z_nodes</DataItem>\n    </Geometry>\n";
+      for (const char* f : {"u", "w", "p", "f", "I", "eta", "C"})
+        x << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+          << "     <DataItem Dimensions=\"" << nz << " " << nx
+          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name_ << ":" << grp
+          << "/" << f << "</DataItem>\n    </Attribute>\n";
+      x << "   </Grid>\n";
+    }
+    x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  }
+  std::filesystem::rename(partial, xdmf_path_);
+}
+
+}  // namespace granbench::twod

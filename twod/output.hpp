@@ -1,0 +1,36 @@
+// Output of the 2D solver (output.cpp): cell-centred HDF5 snapshots of u, w, p, f, I, eta and
+// C(I) with an XDMF index that ParaView opens as a time series, and the run parameters (the
+// regularisation constants included, DESIGN.md §8) as attributes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grid.hpp"
+#include "hdf5_file.hpp"
+#include "solver.hpp"
+
+namespace granbench::twod {
+
+// Every solver parameter as an attribute of `group` (SI units, angle in degrees).
+void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
+                      const SolverParams& params);
+
+class SnapshotWriter {
+ public:
+  // h5_file_name: the HDF5 file name as the XDMF file should reference it (relative path).
+  SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path, const Grid& g);
+  // Write /snapshots/NNNN/{u,w,p,f,I,eta,C} (cell centres, [nz][nx]) and grid coordinates.
+  void write(const Solver& solver);
+  // Write the XDMF index (atomically: .partial, then rename).
+  void finish() const;
+  std::size_t count() const { return times_.size(); }
+
+ private:
+  H5Writer& out_;
+  std::string h5_name_, xdmf_path_;
+  Grid g_;
+  std::vector<double> times_;
+};
+
+}  // namespace granbench::twod

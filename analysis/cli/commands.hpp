@@ -16,5 +16,7 @@ struct CommandFailed : std::runtime_error {
 void add_wellposed_command(CLI::App& app);
 void add_steady_command(CLI::App& app);
 void add_dispersion_command(CLI::App& app);
+void add_run_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 }  // namespace granbench::cli

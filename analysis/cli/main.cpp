@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
   add_wellposed_command(app);
   add_steady_command(app);
   add_dispersion_command(app);
+  add_run_command(app);
+  add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

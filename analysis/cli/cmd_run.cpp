@@ -1,0 +1,103 @@
+// granbench run: one simulation of the periodic chute flow from an initial perturbation, with the
+// measured growth rate and speed of the perturbation.
+//
+//   granbench run --model depthavg --angle 28.5 --h0 0.004 --a0 2e-4 --Lx 0.08 --nx 512 --t-end 10
+//   granbench run --model depthavg --init eigenmode --a0 4e-6 --Lx 0.08 --t-end 2 --json
+//
+// Model-independent options live in RunOptions (run_model.hpp); each model adds its own options
+// and has its own run_<model>.cpp. The model is chosen once, here.
+#include <csignal>
+#include <memory>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "run_model.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+std::atomic<bool>& interrupt_flag() {
+  static std::atomic<bool> flag{false};  // a signal handler can only reach static storage
+  return flag;
+}
+extern "C" void on_sigint(int) { interrupt_flag().store(true); }
+using Handler = void (*)(int);
+Handler& previous_handler() {
+  static Handler h = SIG_DFL;
+  return h;
+}
+
+}  // namespace
+
+InterruptGuard::InterruptGuard() {
+  interrupt_flag().store(false);
+  previous_handler() = std::signal(SIGINT, on_sigint);
+}
+InterruptGuard::~InterruptGuard() { std::signal(SIGINT, previous_handler()); }
+const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
+
+std::vector<std::string> model_names() { return {"depthavg"}; }
+
+Model parse_model(const std::string& name) {
+  if (name == "depthavg") return Model::DepthAvg;
+  throw UsageError("--model: '" + name + "' is not available; valid values {depthavg}");
+}
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+  add_flow_options(app, o.flow);
+  app.add_option("--model", o.model, "model {depthavg}")
+      ->check(one_of(model_names()))
+      ->capture_default_str();
+  app.add_option("--Lx", o.Lx, "domain length Lx [m], > 0")->check(positive())->capture_default_str();
+  app.add_option("--nx", o.nx, "cells along x, in [8, 1048576]")
+      ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20))
+      ->capture_default_str();
+  app.add_option("--a0", o.a0, "perturbation amplitude a0 [m] of (7.2), in [0, h0)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--mode", o.mode, "wavelengths of the perturbation in the domain, in [1, nx/2]")
+      ->check(CLI::Range(1, 1 << 19))
+      ->capture_default_str();
+  app.add_option("--init", o.init, "initial state {sine,eigenmode}: (7.2) or the normal mode (7.10)")
+      ->check(one_of({"sine", "eigenmode"}))
+      ->capture_default_str();
+  app.add_option("--noise", o.noise, "random height noise as a fraction of h0, in [0, 0.5)")
+      ->check(CLI::Range(0.0, 0.4999999))
+      ->capture_default_str();
+  app.add_option("--seed", o.seed, "seed of the noise")->capture_default_str();
+  app.add_option("--t-end", o.t_end, "end time [s], > 0")->check(positive())->capture_default_str();
+  app.add_option("--dt-out", o.dt_out,
+                 "sampling interval of h(x,t) [s], > 0; default: automatic (the fastest wave "
+                 "moves at most Lx/(8 mode) per sample, and at most 0.01 s)")
+      ->check(positive());
+  app.add_option("--rtol", o.rtol, "CVODE relative tolerance, in (0, 1)")
+      ->check(open_range(0.0, 1.0))
+      ->capture_default_str();
+  app.add_option("--atol", o.atol, "CVODE absolute tolerance [m of h], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  add_output_options(app, o.output, false);
+}
+
+void add_run_command(CLI::App& app) {
+  auto run = std::make_shared<RunOptions>();
+  auto depthavg = std::make_shared<DepthAvgOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "run", "simulate the periodic chute flow from a perturbation; measure growth and speed");
+  add_run_options(*sub, *run);
+  add_depthavg_options(*sub, *depthavg);
+  sub->callback([run, depthavg] {
+    if (!(run->a0 < run->flow.h0))
+      throw UsageError("--a0: " + std::to_string(run->a0) + " out of range; valid range [0, h0)");
+    if (static_cast<std::size_t>(run->mode) > run->nx / 2)
+      throw UsageError("--mode: " + std::to_string(run->mode) + " out of range; valid range [1, nx/2]");
+    switch (parse_model(run->model)) {
+      case Model::DepthAvg:
+        run_depthavg(*run, *depthavg);
+        break;
+    }
+  });
+}
+
+}  // namespace granbench::cli

@@ -1,0 +1,66 @@
+// `granbench run` and `granbench sweep`: the options every model shares, the model choice, and
+// the per-model entry points. Each model has one file, run_<model>.cpp, that builds its solver
+// from these options and returns the result as JSON (keys shared by all models: steps,
+// wall_seconds, mass_error, h_mean, flux, growth_rate, phase_speed, wave_speed).
+//
+// Adding a model: add an enumerator to Model, its name to model_names(), a run_<model>.cpp with
+// its own options struct, and one case in the dispatch of cmd_run.cpp.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+
+namespace granbench::cli {
+
+enum class Model { DepthAvg };
+std::vector<std::string> model_names();
+Model parse_model(const std::string& name);
+
+// Model-independent options of `granbench run`.
+struct RunOptions {
+  FlowOptions flow;
+  OutputOptions output;
+  std::string model = "depthavg";
+  double Lx = 0.08;            // domain length [m]
+  std::size_t nx = 256;        // cells along x
+  double a0 = 2e-4;            // perturbation amplitude [m] (7.2)
+  int mode = 1;                // wavelengths of the perturbation in the domain
+  std::string init = "sine";   // sine (7.2) or eigenmode (7.10)
+  double noise = 0.0;          // random height noise, fraction of h0
+  std::uint64_t seed = 1;
+  double t_end = 10.0;         // [s]
+  double dt_out = 0.0;         // sampling interval [s]; 0: automatic
+  double rtol = 1e-6;
+  double atol = 1e-10;
+};
+void add_run_options(CLI::App& app, RunOptions& o);
+
+// Depth-averaged model's own options.
+struct DepthAvgOptions {
+  std::string chi = "1";       // shape factor: 1, bagnold (5/4) or a number >= 1
+  std::string limiter = "central";
+};
+void add_depthavg_options(CLI::App& app, DepthAvgOptions& o);
+// Shape factor from its option text; UsageError naming --chi otherwise.
+double parse_chi(const std::string& text);
+
+// Ctrl-C (SIGINT) raises the flag instead of killing the process while a guard lives, so a run
+// can stop at its next sample and keep what it computed.
+class InterruptGuard {
+ public:
+  InterruptGuard();
+  ~InterruptGuard();
+  const std::atomic<bool>* flag() const;
+};
+
+// Runs the depth-averaged model; prints the table or JSON, writes --out. Throws CommandFailed
+// (after writing what was computed) when interrupted (exit 130) or diverged (exit 3).
+void run_depthavg(const RunOptions& run, const DepthAvgOptions& model);
+
+}  // namespace granbench::cli

@@ -1,0 +1,48 @@
+// Scaled coefficients of the Bagnold (5.4)-(5.5) and Nusselt base states for the 2D linear
+// stability operator; see linear2d_base_state.hpp for the formulas.
+#include "linear2d_base_state.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace granbench::linear2d {
+
+double LinearBaseState::U0(double z) const {
+  if (profile == BaseProfile::Nusselt) return 3.0 * z - 1.5 * z * z;
+  return (5.0 / 3.0) * (1.0 - std::pow(1.0 - z, 1.5));  // (5.5) over u_bar_0
+}
+
+double LinearBaseState::dU0(double z) const {
+  if (profile == BaseProfile::Nusselt) return 3.0 * (1.0 - z);
+  return 2.5 * std::sqrt(1.0 - z);  // derivative of (5.5): I_zeta sqrt(p0/rho_*)/d, scaled
+}
+
+LinearBaseState mu_i_base_state(const SteadyState& s, const MuCurve& curve) {
+  LinearBaseState b;
+  b.profile = BaseProfile::Bagnold;
+  b.F = s.Fr;
+  b.mu = std::tan(s.zeta);
+  b.Gamma = s.I_zeta * curve.dmu_dI(s.I_zeta);
+  b.q = b.mu - 0.5 * b.Gamma;       // (3.3b)
+  b.eta_n0 = 0.4 * b.mu;            // mu p0 / |dU0/dz| = (2 mu/5) sqrt(1 - z)   (2.11)
+  b.eta_s0 = 0.4 * b.Gamma;         // (I mu'/mu) eta_n: the tangent viscosity, along A in (3.2)
+  b.beta = 0.5;
+  return b;
+}
+
+LinearBaseState newtonian_film_base_state(double F, double zeta_rad) {
+  if (!(F > 0.0) || !(zeta_rad > 0.0))
+    throw std::invalid_argument("Newtonian film needs F > 0 and a positive slope");
+  LinearBaseState b;
+  b.profile = BaseProfile::Nusselt;
+  b.F = F;
+  b.mu = std::tan(zeta_rad);
+  b.eta_n0 = b.mu / 3.0;  // nu u_bar/(g cos zeta h^2) with u_bar = g sin zeta h^2/(3 nu)
+  b.eta_s0 = b.mu / 3.0;
+  b.beta = 0.0;
+  return b;
+}
+
+double newtonian_film_reynolds(const LinearBaseState& b) { return 3.0 * b.F * b.F / b.mu; }
+
+}  // namespace granbench::linear2d

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -75,6 +76,34 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
   }
   if (N == path.N && map == path_map) return lambda;
   return nearest(spectrum(b, k_hat, N, map), lambda);
+}
+
+std::vector<BranchPoint> surface_branch(const LinearBaseState& b, const std::vector<double>& k_hat,
+                                        int N, const ContinuationOptions& path) {
+  if (!std::is_sorted(k_hat.begin(), k_hat.end()))
+    throw std::invalid_argument("surface_branch needs increasing k_hat");
+  std::vector<BranchPoint> out;
+  std::complex<double> lambda;
+  double k_prev = 0.0;
+  for (double k : k_hat) {
+    const auto eig = spectrum(b, k, N);
+    // First point by continuation from the long-wave limit; then from the previous point.
+    lambda = out.empty() ? nearest(eig, surface_mode_eigenvalue(b, k, N, VerticalMap::SquareRoot, path))
+                         : nearest(eig, lambda * (k / k_prev));
+    BranchPoint p;
+    p.k_hat = k;
+    p.surface = lambda;
+    p.other_max_growth = std::numeric_limits<double>::quiet_NaN();
+    for (const auto& l : eig) {  // sorted by decreasing real part
+      if (l == lambda) continue;
+      p.other_max_growth = l.real();
+      p.other_phase_speed = -l.imag() / k;
+      break;
+    }
+    out.push_back(p);
+    k_prev = k;
+  }
+  return out;
 }
 
 }  // namespace linear2d

@@ -10,6 +10,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "dispersion.hpp"
+#include "dispersion_twod.hpp"
 #include "hdf5_file.hpp"
 #include "steady_state.hpp"
 
@@ -24,6 +25,7 @@ struct DispersionOptions {
   OutputOptions output;
   std::vector<double> Lx;
   std::string theory = "depthavg";
+  int resolution = 32;  // Chebyshev intervals of --theory twod
 };
 
 Theory parse_theory(const std::string& t) {
@@ -83,7 +85,8 @@ void run_dispersion(const DispersionOptions& o) {
   }
   const Theory theory = parse_theory(o.theory);
   if (theory == Theory::TwoD)
-    throw UsageError("--theory twod: the 2D linear stability is not available in this build");
+    return run_twod_dispersion(s, o.flow.make_curve(), o.Lx,
+                               {o.resolution, o.flow.curve, o.flow.angle_deg}, o.output);
   const double chi = theory == Theory::DepthAvgBagnold ? 1.25 : 1.0;
   const DispersionParams p = DispersionParams::from(s, chi);
 
@@ -153,6 +156,9 @@ void add_dispersion_command(CLI::App& app) {
       ->check(positive());
   sub->add_option("--theory", opts->theory, "linear theory {depthavg,depthavg-bagnold,twod}")
       ->check(one_of({"depthavg", "depthavg-bagnold", "twod"}))
+      ->capture_default_str();
+  sub->add_option("--resolution", opts->resolution,
+                  "Chebyshev intervals for --theory twod, in [8, 160] (check at 3N/2)")
       ->capture_default_str();
   sub->callback([opts] { run_dispersion(*opts); });
 }

@@ -1,0 +1,182 @@
+// `granbench dispersion --theory twod` (dispersion_twod.hpp). Steps: (1) the 2D linear stability
+// at each Lx, at N and at 3N/2 for the convergence check; (2) the short-wave ill-posedness probe;
+// (3) output: JSON, table, and with --out/--plot the three theories over k_hat (the 2D surface
+// branch, (7.11) with chi = 1 and with chi = 5/4) plus each surface eigenmode's profiles.
+#include "dispersion_twod.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "dispersion.hpp"
+#include "hdf5_file.hpp"
+#include "linear2d_eigenmode.hpp"
+#include "linear2d_ill_posedness.hpp"
+#include "linear_stability_2d.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+nlohmann::json mode_json(const Linear2DMode& m) {
+  return {{"growth_rate", m.growth_rate},
+          {"phase_speed", m.phase_speed},
+          {"lambda_hat_re", m.lambda_hat.real()},
+          {"lambda_hat_im", m.lambda_hat.imag()},
+          {"surface_mode", m.surface},
+          {"relative_difference", number_or_null(m.relative_difference)}};
+}
+
+void write_theories(const std::string& path, const SteadyState& s,
+                    const std::vector<Linear2DResult>& results, const Linear2DOptions& opt) {
+  std::vector<double> k_hat;
+  for (int i = 0; i < 60; ++i) k_hat.push_back(std::pow(10.0, -2.0 + 3.0 * i / 59.0));
+  const int N_curve = std::min(opt.N, 24);  // converged to ~1e-7 (tests/linear2d)
+  const auto branch = linear2d::surface_branch(results.front().base, k_hat, N_curve);
+  const double rate = s.u_mean / s.h0;
+  std::vector<double> Lx, g2, c2, go, co, g1, c1, g54, c54;
+  for (const auto& p : branch) {
+    Lx.push_back(Lx_from_k_hat(s, p.k_hat));
+    g2.push_back(p.surface.real() * rate);
+    c2.push_back(-p.surface.imag() / p.k_hat * s.u_mean);
+    go.push_back(p.other_max_growth * rate);
+    co.push_back(p.other_phase_speed * s.u_mean);
+    const auto d1 = dispersion_mode(s, 1.0, Lx.back());
+    const auto d54 = dispersion_mode(s, 1.25, Lx.back());
+    g1.push_back(d1.growth_rate);
+    c1.push_back(d1.phase_speed);
+    g54.push_back(d54.growth_rate);
+    c54.push_back(d54.phase_speed);
+  }
+  H5Writer out(path);
+  out.write("curve/k_hat", k_hat);
+  out.write("curve/Lx", Lx);
+  out.write("curve/twod_growth_rate", g2);
+  out.write("curve/twod_phase_speed", c2);
+  out.write("curve/twod_other_growth_rate", go);
+  out.write("curve/twod_other_phase_speed", co);
+  out.write("curve/depthavg_growth_rate", g1);
+  out.write("curve/depthavg_phase_speed", c1);
+  out.write("curve/bagnold_growth_rate", g54);
+  out.write("curve/bagnold_phase_speed", c54);
+  std::vector<double> pL, pk, pg, pc;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& r = results[i];
+    pL.push_back(r.Lx);
+    pk.push_back(r.k_hat);
+    pg.push_back(r.surface.growth_rate);
+    pc.push_back(r.surface.phase_speed);
+    const linear2d::Eigenmode mode(s, r.base, r.k_hat, linear2d::ChebyshevGrid(r.N), opt.map,
+                                   r.surface_pair);
+    std::vector<double> z(mode.z_nodes()), ur, ui, wr, wi, pr, pi;
+    for (Eigen::Index j = 0; j < mode.u_nodes().size(); ++j) {
+      ur.push_back(mode.u_nodes()(j).real());
+      ui.push_back(mode.u_nodes()(j).imag());
+      wr.push_back(mode.w_nodes()(j).real());
+      wi.push_back(mode.w_nodes()(j).imag());
+      pr.push_back(mode.p_nodes()(j).real());
+      pi.push_back(mode.p_nodes()(j).imag());
+    }
+    const std::string g = "eigenmode_" + std::to_string(i) + "/";
+    out.write(g + "z", z);
+    out.write(g + "u_re", ur);
+    out.write(g + "u_im", ui);
+    out.write(g + "w_re", wr);
+    out.write(g + "w_im", wi);
+    out.write(g + "p_re", pr);
+    out.write(g + "p_im", pi);
+    out.attribute(g, "Lx", r.Lx);
+  }
+  out.write("points/Lx", pL);
+  out.write("points/k_hat", pk);
+  out.write("points/growth_rate", pg);
+  out.write("points/phase_speed", pc);
+  out.attribute("/", "F", s.Fr);
+  out.attribute("/", "Gamma", results.front().base.Gamma);
+  out.attribute("/", "u_mean", s.u_mean);
+  out.attribute("/", "h0", s.h0);
+  out.attribute("/", "angle_deg", s.zeta * 180.0 / std::numbers::pi);
+  out.attribute("/", "N", double(opt.N));
+  out.close();
+}
+
+}  // namespace
+
+void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::vector<double>& Lx,
+                         const TwoDDispersionOptions& t, const OutputOptions& output) {
+  if (t.N < 8 || t.N > 160)
+    throw UsageError("--resolution: Chebyshev intervals for --theory twod must be in [8, 160]");
+  Linear2DOptions opt;
+  opt.N = t.N;
+  opt.N_check = t.N + t.N / 2;
+  std::vector<Linear2DResult> results;
+  for (double L : Lx) results.push_back(linear_stability_2d(s, curve, L, opt));  // (1)
+  const auto probe = linear2d::probe_ill_posedness(s, curve);                  // (2)
+  const auto& base = results.front().base;
+  const double F_c = linear2d::critical_froude_2d(base.mu, base.Gamma);
+
+  if (!output.out.empty() || !output.plot.empty()) {  // (3)
+    const std::string h5 = !output.out.empty() ? output.out : output.plot + ".data.h5";
+    write_theories(h5, s, results, opt);
+    if (!output.plot.empty()) {
+      run_plot_script("linear_theory.py", h5, output.plot);
+      if (output.out.empty()) std::filesystem::remove(h5);
+    }
+  }
+  if (probe.ill_posed_base_state) std::cerr << "granbench: warning: " << probe.message << "\n";
+
+  if (output.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& r : results) {
+      nlohmann::json m = mode_json(r.surface);
+      m["Lx"] = r.Lx;
+      m["k_hat"] = r.k_hat;
+      m["convergence"] = {{"N", r.N},
+                          {"N_check", r.N_check},
+                          {"growth_rate_check", r.surface.lambda_hat_check.real() * s.u_mean / s.h0},
+                          {"phase_speed_check",
+                           -r.surface.lambda_hat_check.imag() / r.k_hat * s.u_mean},
+                          {"relative_difference", number_or_null(r.surface.relative_difference)}};
+      nlohmann::json branches = nlohmann::json::array();
+      for (const auto& u : r.unstable) branches.push_back(mode_json(u));
+      m["unstable_branches"] = branches;
+      list.push_back(m);
+    }
+    print_json({{"theory", "twod"},
+                {"F", s.Fr},
+                {"F_critical", F_c},
+                {"Gamma", base.Gamma},
+                {"u_mean", s.u_mean},
+                {"modes", list},
+                {"ill_posedness",
+                 {{"C", probe.C},
+                  {"k_hat_probe", probe.k_hat},
+                  {"N1", probe.N1},
+                  {"N2", probe.N2},
+                  {"growth_rate_N1", probe.growth_rate_N1},
+                  {"growth_rate_N2", probe.growth_rate_N2},
+                  {"ill_posed_base_state", probe.ill_posed_base_state},
+                  {"message", probe.message}}}});
+    return;
+  }
+  std::cout << std::setprecision(5) << "Exact 2D linear stability (Chebyshev N = " << opt.N
+            << ", check N = " << opt.N_check << "), " << t.curve_name << " curve, angle "
+            << t.angle_deg << " deg, h0 = " << s.h0 << " m\n  F = " << s.Fr
+            << " (2D long-wave critical " << F_c << "), Gamma = " << base.Gamma << "\n\n"
+            << "  " << std::setw(10) << "Lx [m]" << std::setw(10) << "k_hat" << std::setw(15)
+            << "growth [1/s]" << std::setw(15) << "speed [m/s]" << std::setw(12) << "rel. diff"
+            << "   other unstable branches (growth, speed)\n";
+  for (const auto& r : results) {
+    std::cout << "  " << std::setw(10) << r.Lx << std::setw(10) << r.k_hat << std::setw(15)
+              << r.surface.growth_rate << std::setw(15) << r.surface.phase_speed << std::setw(12)
+              << std::setprecision(2) << r.surface.relative_difference << std::setprecision(5)
+              << "  ";
+    for (const auto& u : r.unstable)
+      if (!u.surface) std::cout << " (" << u.growth_rate << ", " << u.phase_speed << ")";
+    std::cout << "\n";
+  }
+  std::cout << "\n  " << probe.message << "\n";
+}
+
+}  // namespace granbench::cli

@@ -80,23 +80,29 @@ LinearFit find_window(std::span<const double> t, std::span<const double> y,
     Sty[i + 1] = Sty[i] + a * b;
     Syy[i + 1] = Syy[i] + b * b;
   }
-  auto rms = [&](std::size_t i, std::size_t j) {  // inclusive window [i, j]
+  struct Fit {
+    double slope, rms;
+  };
+  auto fit = [&](std::size_t i, std::size_t j) -> Fit {  // inclusive window [i, j]
     const double m = S1[j + 1] - S1[i], st = St[j + 1] - St[i], sy = Sy[j + 1] - Sy[i];
     const double ctt = (Stt[j + 1] - Stt[i]) - st * st / m;
     const double cty = (Sty[j + 1] - Sty[i]) - st * sy / m;
     const double cyy = (Syy[j + 1] - Syy[i]) - sy * sy / m;
-    return std::sqrt(std::max(0.0, cyy - cty * cty / ctt) / m);
+    return {cty / ctt, std::sqrt(std::max(0.0, cyy - cty * cty / ctt) / m)};
   };
   std::size_t bi = 0, bj = min_pts - 1;
-  double best_span = -1.0, best_rms = INFINITY;
+  double best_score = -1.0, best_rms = INFINITY;
   found = false;
   for (std::size_t i = 0; i + min_pts <= n; ++i) {
     for (std::size_t j = i + min_pts - 1; j < n; ++j) {
-      const double r = rms(i, j), span = t[j] - t[i];
-      if (r <= opt.max_rms && (span > best_span || (span == best_span && r < best_rms))) {
+      const Fit f = fit(i, j);
+      if (f.rms > opt.max_rms) continue;
+      // Number of e-folds the window spans: prefers exponential growth (or decay) over a
+      // saturated plateau, and the longer of two windows at the same rate.
+      const double score = std::fabs(f.slope) * (t[j] - t[i]) + 1e-12 * (t[j] - t[i]);
+      if (score > best_score) {
         found = true;
-        best_span = span;
-        best_rms = r;
+        best_score = score;
         bi = i;
         bj = j;
       }
@@ -104,7 +110,7 @@ LinearFit find_window(std::span<const double> t, std::span<const double> y,
   }
   if (!found) {  // best-fitting window of the minimum length
     for (std::size_t i = 0; i + min_pts <= n; ++i) {
-      const double r = rms(i, i + min_pts - 1);
+      const double r = fit(i, i + min_pts - 1).rms;
       if (r < best_rms) {
         best_rms = r;
         bi = i;

@@ -8,8 +8,9 @@
 //
 // The window where growth is exponential (after transients of other modes, before nonlinear
 // saturation) is found automatically: among all windows of at least min_points samples and
-// min_fraction of the series, the longest one in time whose least-squares fit of ln|h_k| has an
-// RMS residual below max_rms. The fit's R^2 and RMS residual are reported with the window.
+// min_fraction of the series whose least-squares fit of ln|h_k| has an RMS residual below max_rms,
+// the one spanning the most e-folds |slope| (t_last - t_first) (so a saturated plateau, or a short
+// piece of a longer exponential, loses). The fit's R^2 and RMS residual are reported with it.
 #pragma once
 
 #include <complex>

@@ -22,8 +22,8 @@ LinearRunResult linear_run(const SteadyState& base, const MuCurve& curve, double
   space.chi = chi;
   space.reconstruction = p.reconstruction;
   IntegratorParams integ;
-  integ.rtol = p.rtol;
-  integ.atol = p.atol_fraction * p.rtol * base.h0;
+  integ.rtol = p.tolerance * p.amplitude;
+  integ.atol = integ.rtol * base.h0;
   InitialParams init;
   init.kind = InitKind::Eigenmode;
   init.a0 = p.amplitude * base.h0;

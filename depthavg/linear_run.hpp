@@ -4,7 +4,7 @@
 // speed of the seeded mode spectrally (analysis/spectral_growth.hpp), beside the exact relation
 // (7.11) (analysis/dispersion.hpp). One point of `granbench sweep` and of the accuracy tests.
 //
-// Run length: t_end = max(4 wave periods, 0.5 / |Re lambda|), capped at 5 s, unless given;
+// Tolerances are relative to the perturbation (see LinearRunParams). Run length: t_end = max(4 wave periods, 0.5 / |Re lambda|), capped at 5 s, unless given;
 // dt_out = min(period/16, t_end/40), so the phase unwraps (|c| dt_out < Lx/2).
 #pragma once
 
@@ -19,9 +19,12 @@ namespace granbench::depthavg {
 
 struct LinearRunParams {
   std::size_t nx = 128;
-  double rtol = 1e-8;
-  double atol_fraction = 1e-4;   // atol = atol_fraction * rtol * h0
-  double amplitude = 1e-3;       // of h, as a fraction of h0
+  // Error control relative to the seeded perturbation, not to the base state: CVODE's
+  // rtol = tolerance * amplitude and atol = rtol * h0, so the local error of the perturbation is
+  // about `tolerance` of its size.
+  double tolerance = 1e-6;
+  double amplitude = 1e-4;       // of h, as a fraction of h0; small, because the nonlinear
+                                 // correction to the growth rate is O(amplitude^2 omega/Re lambda)
   int mode = 1;                  // wavelengths in the domain
   double t_end = 0.0;            // 0: automatic
   Reconstruction reconstruction = Reconstruction::Central;

@@ -12,10 +12,12 @@ namespace granbench::depthavg {
 
 // Slope reconstruction of the cell averages at the faces. Central is the unlimited centred slope
 // (second order, for clean linear-regime measurements); the limiters keep h positive and the
-// solution free of new extrema for nonlinear rollwaves.
-enum class Reconstruction { Central, Minmod, MC };
+// solution free of new extrema for nonlinear rollwaves. Van Albada's limiter is smooth (no kinks
+// in dU/dt), which suits the implicit BDF integrator; minmod and MC are piecewise linear in the
+// differences, so CVODE's error control sees kinks and takes much smaller steps.
+enum class Reconstruction { Central, Minmod, MC, VanAlbada };
 std::string_view reconstruction_name(Reconstruction r);
-// "central", "minmod", "mc"; throws std::invalid_argument otherwise.
+// "central", "minmod", "mc", "vanalbada"; throws std::invalid_argument otherwise.
 Reconstruction parse_reconstruction(std::string_view name);
 
 struct SpaceParams {

@@ -77,6 +77,8 @@ double Rhs::slope(double left, double centre, double right) const {
       return minmod(dm, dp);
     case Reconstruction::MC:
       return minmod(minmod(2.0 * dm, 2.0 * dp), 0.5 * (dm + dp));
+    case Reconstruction::VanAlbada:  // smooth: dm dp (dm + dp) / (dm^2 + dp^2)
+      return dm * dp * (dm + dp) / (dm * dm + dp * dp + 1e-300);
   }
   return 0.0;
 }

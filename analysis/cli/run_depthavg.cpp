@@ -28,8 +28,8 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->group(g)
       ->capture_default_str();
   app.add_option("--limiter", o.limiter,
-                 "slope reconstruction {central,minmod,mc}: central is unlimited (linear runs)")
-      ->check(one_of({"central", "minmod", "mc"}))
+                 "slope reconstruction {central,minmod,mc,vanalbada}: central is unlimited (linear runs), vanalbada a smooth limiter")
+      ->check(one_of({"central", "minmod", "mc", "vanalbada"}))
       ->group(g)
       ->capture_default_str();
 }

@@ -1,0 +1,101 @@
+// The `granbench run` and `granbench sweep` commands for the depth-averaged model: bad options are
+// rejected with exit code 2 and one line naming the option, without writing output; a short run
+// and sweep produce the documented JSON keys.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct Result {
+  int code;
+  std::string out;
+};
+
+Result granbench(const std::string& args) {
+  const std::string cmd =
+      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>/tmp/granbench_cli_err.txt";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string last_stderr() {
+  std::string s;
+  if (FILE* f = std::fopen("/tmp/granbench_cli_err.txt", "r")) {
+    std::array<char, 4096> buf{};
+    while (std::fgets(buf.data(), buf.size(), f)) s += buf.data();
+    std::fclose(f);
+  }
+  return s;
+}
+
+TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
+  const std::string out = (std::filesystem::temp_directory_path() / "gb_cli_bad.h5").string();
+  std::filesystem::remove(out);
+  const std::pair<std::string, std::string> cases[] = {
+      {"run --model depthavg --nx 2", "--nx"},
+      {"run --model depthavg --chi 0.5", "--chi"},
+      {"run --model depthavg --chi plug", "--chi"},
+      {"run --model depthavg --limiter superbee", "--limiter"},
+      {"run --model depthavg --a0 0.005", "--a0"},
+      {"run --model depthavg --t-end -1", "--t-end"},
+      {"run --model depthavg --rtol 2", "--rtol"},
+      {"run --model depthavg --init cosine", "--init"},
+      {"run --model nosuch", "--model"},
+      {"run --model depthavg --curve jop --angle 10", "--angle"},
+      {"sweep --model depthavg --Lx 0.1:0.05:3", "--Lx"},
+      {"sweep --model depthavg --Lx 0.1:0.2", "--Lx"},
+      {"sweep --model depthavg --jobs 0", "--jobs"},
+  };
+  for (const auto& [args, option] : cases) {
+    const auto r = granbench(args + " --out " + out);
+    EXPECT_EQ(r.code, 2) << args;
+    const std::string err = last_stderr();
+    EXPECT_NE(err.find(option), std::string::npos) << args << ": " << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+}
+
+TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
+  const std::string out = (std::filesystem::temp_directory_path() / "gb_cli_run.h5").string();
+  std::filesystem::remove(out);
+  const auto r = granbench(
+      "run --model depthavg --init eigenmode --a0 4e-6 --Lx 0.08 --nx 64 --t-end 0.3 "
+      "--rtol 1e-8 --atol 1e-14 --json --out " + out);
+  ASSERT_EQ(r.code, 0) << last_stderr();
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"steps", "wall_seconds", "mass_error", "h_mean", "flux", "growth_rate",
+                          "phase_speed", "wave_speed", "growth_rate_exact", "phase_speed_exact"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_NEAR(j["growth_rate"].get<double>(), j["growth_rate_exact"].get<double>(),
+              0.02 * j["growth_rate_exact"].get<double>());
+  EXPECT_LT(j["mass_error"].get<double>(), 1e-13);
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+}
+
+TEST(DepthAvgCli, SweepReportsPointsBesideTheExactRelation) {
+  const auto r = granbench("sweep --model depthavg --Lx 0.05:0.1:2 --nx 128 --jobs 2 --json");
+  ASSERT_EQ(r.code, 0) << last_stderr();
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["points"].size(), 2u);
+  for (const auto& p : j["points"]) {
+    for (const char* key : {"Lx", "growth_rate", "growth_rate_exact", "phase_speed",
+                            "phase_speed_exact"})
+      EXPECT_TRUE(p.contains(key)) << key;
+    EXPECT_NEAR(p["growth_rate"].get<double>(), p["growth_rate_exact"].get<double>(),
+                0.01 * p["growth_rate_exact"].get<double>());
+  }
+}
+
+}  // namespace

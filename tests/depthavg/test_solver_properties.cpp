@@ -1,0 +1,136 @@
+// Properties of the depth-averaged solver that hold exactly: mass is conserved to round-off
+// (conservative fluxes, and a preconditioner that keeps column sums, see cvode_integrator.hpp);
+// the uniform steady state (h0, u_bar_0) stays steady; the unlimited and limited reconstructions
+// approach each other on a rollwave as the grid is refined; the stop flag keeps what was computed; a diverging run stops
+// and says when, where and in which quantity.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include "depthavg/initial_state.hpp"
+#include "depthavg/solver.hpp"
+#include "mu_curves.hpp"
+#include "steady_state.hpp"
+
+namespace granbench {
+namespace {
+
+struct Fixture {
+  Material material;
+  MuCurve curve{CurveKind::Regularised, material, 4e-3};
+  SteadyState base = steady_state(curve, degrees_to_radians(28.5), 4e-3);
+};
+
+depthavg::RunResult rollwave(const Fixture& f, depthavg::Reconstruction rec, std::size_t nx,
+                             double t_end) {
+  depthavg::SpaceParams space;
+  space.Lx = 0.08;
+  space.nx = nx;
+  space.reconstruction = rec;
+  depthavg::IntegratorParams integ;
+  const depthavg::Solver solver(f.base, f.curve, space, integ);
+  depthavg::InitialParams init;  // (7.2), a0 = 0.2 mm, with a little noise in every mode
+  init.noise = 1e-3;
+  depthavg::OutputParams out;
+  out.t_end = t_end;
+  out.dt_out = 0.01;
+  return solver.run(depthavg::initial_state(solver.rhs(), init), out);
+}
+
+TEST(DepthAvgSolver, MassIsConservedToRoundOff) {
+  const Fixture f;
+  for (auto rec : {depthavg::Reconstruction::Central, depthavg::Reconstruction::VanAlbada}) {
+    const auto r = rollwave(f, rec, 64, 0.5);
+    ASSERT_EQ(r.status, depthavg::RunStatus::Completed) << r.message;
+    EXPECT_LT(r.mass_error(), 1e-13) << depthavg::reconstruction_name(rec);
+  }
+}
+
+TEST(DepthAvgSolver, UniformSteadyStateStaysSteady) {
+  const Fixture f;
+  depthavg::SpaceParams space;
+  space.nx = 64;
+  const depthavg::Solver solver(f.base, f.curve, space, {});
+  depthavg::InitialParams init;
+  init.a0 = 0.0;
+  const auto U0 = depthavg::initial_state(solver.rhs(), init);
+  depthavg::OutputParams out;
+  out.t_end = 2.0;
+  out.dt_out = 0.5;
+  const auto r = solver.run(U0, out);
+  ASSERT_EQ(r.status, depthavg::RunStatus::Completed) << r.message;
+  double dev = 0.0;
+  for (std::size_t i = 0; i < U0.size(); ++i)
+    dev = std::max(dev, std::fabs(r.final_state[i] - U0[i]) / std::fabs(U0[i]));
+  EXPECT_LT(dev, 1e-12);
+}
+
+TEST(DepthAvgSolver, CentralAndLimitedReconstructionsConvergeTogetherOnARollwave) {
+  // From (7.2) with a0 = 0.2 mm the wave saturates within 0.3 s, so by t = 0.5 s it is
+  // nonlinear. The MC limiter clips extrema (first order there) and is the more dissipative;
+  // the two must approach each other as the grid is refined.
+  const Fixture f;
+  double diff[2], amp = 0.0;
+  const std::size_t nx[2] = {48, 96};
+  for (int i = 0; i < 2; ++i) {
+    const auto a = rollwave(f, depthavg::Reconstruction::Central, nx[i], 0.5);
+    const auto b = rollwave(f, depthavg::Reconstruction::MC, nx[i], 0.5);
+    ASSERT_EQ(a.status, depthavg::RunStatus::Completed);
+    ASSERT_EQ(b.status, depthavg::RunStatus::Completed);
+    EXPECT_LT(b.mass_error(), 1e-13);
+    const auto ha = a.series.h_at(a.series.nt() - 1), hb = b.series.h_at(b.series.nt() - 1);
+    diff[i] = 0.0;
+    amp = 0.0;
+    for (std::size_t j = 0; j < ha.size(); ++j) {
+      diff[i] = std::max(diff[i], std::fabs(ha[j] - hb[j]));
+      amp = std::max(amp, std::fabs(ha[j] - f.base.h0));
+    }
+  }
+  EXPECT_GT(amp, 4e-4);              // the wave has grown well beyond a0 = 0.2 mm
+  EXPECT_LT(diff[1], 0.9 * diff[0]);  // closer on the finer grid
+  EXPECT_LT(diff[1], 0.35 * amp);
+}
+
+TEST(DepthAvgSolver, StopFlagKeepsWhatWasComputed) {
+  const Fixture f;
+  depthavg::SpaceParams space;
+  space.nx = 32;
+  const depthavg::Solver solver(f.base, f.curve, space, {});
+  const auto U0 = depthavg::initial_state(solver.rhs(), {});
+  std::atomic<bool> stop{false};
+  depthavg::RunCallbacks cb;
+  cb.stop = &stop;
+  int calls = 0;
+  cb.progress = [&](double, double) {
+    if (++calls == 3) stop = true;
+  };
+  depthavg::OutputParams out;
+  out.t_end = 10.0;
+  out.dt_out = 0.01;
+  const auto r = solver.run(U0, out, cb);
+  EXPECT_EQ(r.status, depthavg::RunStatus::Interrupted);
+  EXPECT_EQ(r.series.nt(), 4u);  // t = 0 and three samples
+  EXPECT_NEAR(r.t_reached, 0.03, 1e-12);
+}
+
+TEST(DepthAvgSolver, DivergenceIsReportedWithTimePlaceAndQuantity) {
+  const Fixture f;
+  depthavg::SpaceParams space;
+  space.nx = 32;
+  const depthavg::Solver solver(f.base, f.curve, space, {});
+  auto U0 = depthavg::initial_state(solver.rhs(), {});
+  U0[2 * 7 + 1] = std::numeric_limits<double>::quiet_NaN();  // a broken momentum in cell 7
+  depthavg::OutputParams out;
+  out.t_end = 1.0;
+  const auto r = solver.run(U0, out);
+  EXPECT_EQ(r.status, depthavg::RunStatus::Diverged);
+  EXPECT_NE(r.message.find("t = "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("x = "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("h"), std::string::npos) << r.message;
+}
+
+}  // namespace
+}  // namespace granbench

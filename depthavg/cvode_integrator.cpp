@@ -9,6 +9,7 @@
 #include <sunmatrix/sunmatrix_band.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -56,6 +57,7 @@ struct CvodeIntegrator::Impl {
   sunindextype bw = 0;  // upper = lower half-bandwidth in components
   std::vector<std::vector<std::size_t>> groups;
   long precond_rhs_evals = 0;
+  std::size_t nonfinite = SIZE_MAX;  // last component where U or F(U) was not finite
   std::string last_error;
   double t = 0.0;
 
@@ -78,8 +80,17 @@ struct CvodeIntegrator::Impl {
     auto* self = static_cast<Impl*>(data);
     self->rhs(self->span_of(yv), self->span_of(fv));
     const double* f = N_VGetArrayPointer(fv);
+    const double* y = N_VGetArrayPointer(yv);
     for (std::size_t i = 0; i < self->n; ++i)
-      if (!std::isfinite(f[i])) return 1;
+      if (!std::isfinite(y[i])) {
+        self->nonfinite = i;
+        return 1;
+      }
+    for (std::size_t i = 0; i < self->n; ++i)
+      if (!std::isfinite(f[i])) {
+        self->nonfinite = i;
+        return 1;
+      }
     return 0;
   }
 
@@ -187,7 +198,8 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
   check(CVodeSetMaxOrd(m.mem, p.max_order), "CVodeSetMaxOrd");
   check(CVodeSetConstraints(m.mem, m.constraints), "CVodeSetConstraints");
 
-  m.krylov = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 10, m.ctx);
+  const bool band = p.preconditioner == Preconditioner::Band;
+  m.krylov = SUNLinSol_SPGMR(m.y, band ? SUN_PREC_LEFT : SUN_PREC_NONE, 10, m.ctx);
   if (!m.krylov) throw std::runtime_error("CVODE: SUNLinSol_SPGMR failed");
   check(CVodeSetLinearSolver(m.mem, m.krylov, nullptr), "CVodeSetLinearSolver");
   check(CVodeSetEpsLin(m.mem, p.eps_lin), "CVodeSetEpsLin");
@@ -200,7 +212,8 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
   if (!m.band_ls) throw std::runtime_error("CVODE: SUNLinSol_Band failed");
   check(SUNLinSolInitialize(m.band_ls), "SUNLinSolInitialize");
   m.groups = colour_cells(rhs.nx(), Rhs::stencil_radius);
-  check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
+  if (band)
+    check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
@@ -216,7 +229,10 @@ AdvanceResult CvodeIntegrator::advance_to(double t_out) {
     res.ok = false;
     res.message = m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag)
                                        : m.last_error;
-    if (CVodeGetErrWeights(m.mem, m.ewt) == 0 && CVodeGetEstLocalErrors(m.mem, m.ele) == 0) {
+    if (m.nonfinite != SIZE_MAX) {
+      res.worst = m.nonfinite;
+      res.nonfinite = true;
+    } else if (CVodeGetErrWeights(m.mem, m.ewt) == 0 && CVodeGetEstLocalErrors(m.mem, m.ele) == 0) {
       const double* e = N_VGetArrayPointer(m.ele);
       const double* w = N_VGetArrayPointer(m.ewt);
       double worst = -1.0;

@@ -41,7 +41,9 @@ struct AdvanceResult {
   bool ok = true;
   double t = 0.0;          // time reached
   std::string message;     // CVODE's message when !ok
-  std::size_t worst = 0;   // component with the largest weighted local error estimate
+  std::size_t worst = 0;   // the component that was not finite, or else the one with the
+                           // largest weighted local error estimate
+  bool nonfinite = false;  // worst names a non-finite value of U or F(U)
 };
 
 class CvodeIntegrator {

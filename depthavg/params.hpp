@@ -29,12 +29,17 @@ struct SpaceParams {
   double h_dry_fraction = 1e-6;  // depth (as a fraction of h0) below which u is desingularised
 };
 
+// Left preconditioner of the SPGMR iteration: the coloured band Jacobian (cvode_integrator.hpp),
+// or none (near the CFL limit I - gamma J is close to the identity and GMRES converges anyway).
+enum class Preconditioner { Band, None };
+
 struct IntegratorParams {
   double rtol = 1e-6;
   double atol = 1e-10;         // absolute tolerance, scaled per component (h in m, hu in m^2/s)
   long max_steps = 2000000;    // per output interval
   int max_order = 5;           // BDF order limit
   double eps_lin = 0.05;       // CVODE's linear-solver tolerance factor
+  Preconditioner preconditioner = Preconditioner::Band;
 };
 
 enum class InitKind { Sine, Eigenmode };

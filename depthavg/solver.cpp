@@ -80,8 +80,8 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
     if (!adv.ok) {
       std::ostringstream s;
       s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message
-        << "); largest local error in " << quantity_name(adv.worst) << " at x = "
-        << rhs_.x(adv.worst / 2) << " m";
+        << "); " << (adv.nonfinite ? "non-finite " : "largest local error in ")
+        << quantity_name(adv.worst) << " at x = " << rhs_.x(adv.worst / 2) << " m";
       res.status = RunStatus::Diverged;
       res.message = s.str();
       break;

@@ -71,4 +71,12 @@ Eigenmode::Fields Eigenmode::seeded_state(double x, double z, double a) const {
   return f;
 }
 
+Eigenmode surface_eigenmode(const SteadyState& s, const MuCurve& curve, double Lx,
+                            const Linear2DOptions& opt) {
+  Linear2DOptions o = opt;
+  o.N_check = 0;  // the mode itself; convergence is checked by the caller if needed
+  const Linear2DResult r = linear_stability_2d(s, curve, Lx, o);
+  return Eigenmode(s, r.base, r.k_hat, ChebyshevGrid(r.N), o.map, r.surface_pair);
+}
+
 }  // namespace granbench::linear2d

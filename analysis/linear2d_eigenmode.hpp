@@ -19,6 +19,7 @@
 #include "linear2d_chebyshev.hpp"
 #include "linear2d_operator.hpp"
 #include "linear2d_spectrum.hpp"
+#include "linear_stability_2d.hpp"
 #include "steady_state.hpp"
 
 namespace granbench::linear2d {
@@ -64,5 +65,10 @@ class Eigenmode {
   std::vector<double> z_;
   Eigen::VectorXcd u_, w_, p_;  // in node order of the grid (bed first), SI per metre of h
 };
+
+// One call for seeding: the surface eigenmode of the Bagnold state of `curve` at wavelength Lx
+// (linear_stability_2d with opt, then the Eigenmode of its surface pair).
+Eigenmode surface_eigenmode(const SteadyState& s, const MuCurve& curve, double Lx,
+                            const Linear2DOptions& opt = {});
 
 }  // namespace granbench::linear2d

@@ -82,4 +82,8 @@ TEST(Linear2DEigenmode, FieldsSatisfyTheLinearisedConditions) {
   EXPECT_FALSE(mode.seeded_state(x, h + 1e-6, a).granular);
   EXPECT_NEAR(mode.seeded_state(x, 0.5 * s.h0, a).u,
               s.velocity(0.5 * s.h0) + mode.perturbation(x, 0.5 * s.h0, a).u, 1e-15);
+  // The one-call factory gives the same mode.
+  const Eigenmode same = surface_eigenmode(s, curve, 0.08, opt);
+  EXPECT_NEAR(std::abs(same.u_hat(0.3 * s.h0) - mode.u_hat(0.3 * s.h0)), 0.0,
+              1e-9 * std::abs(mode.u_hat(0.3 * s.h0)));
 }

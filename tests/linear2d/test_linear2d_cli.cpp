@@ -3,40 +3,18 @@
 // with the library, the warning for an ill-posed base state, and bad input (exit 2, one line
 // naming the option, no output file).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "../support/run_granbench.hpp"
 #include "linear_stability_2d.hpp"
 
 namespace {
-
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-Result run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string errfile = dir / "granbench_linear2d_cli_err.txt";
-  const std::string cmd =
-      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + errfile;
-  Result r{};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  FILE* e = fopen(errfile.c_str(), "r");
-  while (e && fgets(buf.data(), buf.size(), e)) r.err += buf.data();
-  if (e) fclose(e);
-  return r;
+granbench::testing::CommandResult run(const std::string& args) {
+  return granbench::testing::run_granbench(args, "linear2d");
 }
-
 }  // namespace
 
 TEST(Linear2DCli, TwoDTheoryJsonCarriesTheConvergenceCheck) {

@@ -1,0 +1,37 @@
+// Test support: run the granbench command of this build tree and capture its exit code, stdout
+// and stderr. Shared by the end-to-end CLI tests (header only; include by relative path).
+#pragma once
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace granbench::testing {
+
+struct CommandResult {
+  int code = -1;
+  std::string out, err;
+};
+
+// `args` is appended to the path of the granbench binary; stderr goes to a file named after
+// `tag` in the temporary directory.
+inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli") {
+  const auto errfile = std::filesystem::temp_directory_path() / ("granbench_" + tag + "_err.txt");
+  const std::string cmd =
+      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + errfile.string();
+  CommandResult r;
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (p && fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = p ? pclose(p) : -1;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  FILE* e = fopen(errfile.c_str(), "r");
+  while (e && fgets(buf.data(), buf.size(), e)) r.err += buf.data();
+  if (e) fclose(e);
+  return r;
+}
+
+}  // namespace granbench::testing

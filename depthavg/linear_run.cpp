@@ -21,6 +21,7 @@ LinearRunResult linear_run(const SteadyState& base, const MuCurve& curve, double
   space.nx = p.nx;
   space.chi = chi;
   space.reconstruction = p.reconstruction;
+  space.frame_speed = p.co_moving ? r.exact.phase_speed : 0.0;
   IntegratorParams integ;
   integ.rtol = p.tolerance * p.amplitude;
   integ.atol = integ.rtol * base.h0;

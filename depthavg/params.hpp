@@ -27,6 +27,7 @@ struct SpaceParams {
   Reconstruction reconstruction = Reconstruction::Central;
   bool viscous = true;         // the term d/dx(nu h^{3/2} du/dx) of (7.4)
   double h_dry_fraction = 1e-6;  // depth (as a fraction of h0) below which u is desingularised
+  double frame_speed = 0.0;    // speed c of the computational frame x' = x - c t [m/s] (rhs.hpp)
 };
 
 // Left preconditioner of the SPGMR iteration: the coloured band Jacobian (cvode_integrator.hpp),

@@ -16,11 +16,12 @@ double minmod(double a, double b) {
 }
 
 // Physical flux and characteristic speeds of (h, q) with momentum flux chi q u + g' h^2/2.
+// In a frame moving at speed c the fluxes gain -c U (see rhs.hpp).
 struct FaceState {
   double h, u, q;
-  double flux_h() const { return q; }                                       // (7.3)
-  double flux_q(double chi, double g_cos) const {
-    return chi * q * u + 0.5 * g_cos * h * h;                               // (7.4)
+  double flux_h(double c) const { return q - c * h; }                       // (7.3)
+  double flux_q(double chi, double g_cos, double c) const {
+    return chi * q * u + 0.5 * g_cos * h * h - c * q;                       // (7.4)
   }
   double celerity(double chi, double g_cos) const {
     return std::sqrt(std::max(0.0, chi * (chi - 1.0) * u * u + g_cos * h));
@@ -86,6 +87,7 @@ double Rhs::slope(double left, double centre, double right) const {
 void Rhs::operator()(std::span<const double> U, std::span<double> dUdt) const {
   const std::size_t n = space_.nx;
   const double chi = space_.chi;
+  const double cf = space_.frame_speed;
   auto H = [&](std::size_t j) { return U[2 * j]; };
   auto Q = [&](std::size_t j) { return U[2 * j + 1]; };
 
@@ -109,16 +111,17 @@ void Rhs::operator()(std::span<const double> U, std::span<double> dUdt) const {
     L.q = L.h * L.u;
     R.q = R.h * R.u;
     const double cL = L.celerity(chi, g_cos_), cR = R.celerity(chi, g_cos_);
-    const double ap = std::max({chi * L.u + cL, chi * R.u + cR, 0.0});
-    const double am = std::min({chi * L.u - cL, chi * R.u - cR, 0.0});
+    const double ap = std::max({chi * L.u + cL - cf, chi * R.u + cR - cf, 0.0});
+    const double am = std::min({chi * L.u - cL - cf, chi * R.u - cR - cf, 0.0});
     double fh, fq;
     if (ap - am > 1e-300) {
       const double w = 1.0 / (ap - am);
-      fh = w * (ap * L.flux_h() - am * R.flux_h() + ap * am * (R.h - L.h));
-      fq = w * (ap * L.flux_q(chi, g_cos_) - am * R.flux_q(chi, g_cos_) + ap * am * (R.q - L.q));
+      fh = w * (ap * L.flux_h(cf) - am * R.flux_h(cf) + ap * am * (R.h - L.h));
+      fq = w * (ap * L.flux_q(chi, g_cos_, cf) - am * R.flux_q(chi, g_cos_, cf) +
+                ap * am * (R.q - L.q));
     } else {
-      fh = 0.5 * (L.flux_h() + R.flux_h());
-      fq = 0.5 * (L.flux_q(chi, g_cos_) + R.flux_q(chi, g_cos_));
+      fh = 0.5 * (L.flux_h(cf) + R.flux_h(cf));
+      fq = 0.5 * (L.flux_q(chi, g_cos_, cf) + R.flux_q(chi, g_cos_, cf));
     }
     if (space_.viscous) {
       const double hf = 0.5 * (std::max(H(j), 0.0) + std::max(H(jp), 0.0));

@@ -19,6 +19,11 @@
 // at the face (eigenvalues of the flux Jacobian of (h, q) with momentum flux chi q^2/h); the
 // viscous term as a centred face flux nu h_f^{3/2} (u_{j+1} - u_j)/dx; friction and gravity as a
 // cell source. Each cell's derivative depends on cells j-2 .. j+2 (stencil radius 2).
+//
+// Co-moving frame (optional): in x' = x - c t, with U still the lab-frame (h, h u), the equations
+// are dU/dt + d(F(U) - c U)/dx' = S, so the fluxes gain -c U and the characteristic speeds shift
+// by -c; friction and viscosity, which depend on the lab velocity u, are unchanged. A saturated
+// rollwave moving at about c is then nearly steady, and CVODE can take far longer steps.
 #pragma once
 
 #include <cstddef>

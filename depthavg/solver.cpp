@@ -3,8 +3,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <complex>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
+
+#include "real_fft.hpp"
 
 namespace granbench::depthavg {
 
@@ -35,6 +39,16 @@ std::string check_state(const Rhs& rhs, std::span<const double> U, double t) {
   return {};
 }
 
+// Periodic translation of v by `distance` (in units of the period) to the right, exact for the
+// grid's Fourier interpolant: coefficient m gains exp(-2 pi i m distance).
+void translate(RealFFT& fft, std::vector<double>& v, double distance) {
+  auto V = fft.forward(v);
+  const double n = static_cast<double>(v.size());
+  for (std::size_t m = 0; m < V.size(); ++m)
+    V[m] *= std::polar(1.0 / n, -2.0 * std::numbers::pi * static_cast<double>(m) * distance);
+  v = fft.inverse(V);
+}
+
 }  // namespace
 
 Solver::Solver(const SteadyState& base, const MuCurve& curve, const SpaceParams& space,
@@ -62,10 +76,18 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
   RunResult res;
   res.series = SurfaceSeries::uniform_grid(rhs_.space().Lx, nx, h0);
   std::vector<double> h(nx), u(nx);
+  RealFFT fft(nx);
+  const double c_frame = rhs_.space().frame_speed;
+  // Samples are stored in the lab frame: a co-moving solution is translated back by c t.
   auto sample = [&](double t, std::span<const double> U) {
     for (std::size_t j = 0; j < nx; ++j) {
       h[j] = U[2 * j];
       u[j] = rhs_.velocity(U[2 * j], U[2 * j + 1]);
+    }
+    if (c_frame != 0.0) {
+      const double distance = c_frame * t / rhs_.space().Lx;
+      translate(fft, h, distance);
+      translate(fft, u, distance);
     }
     res.series.append(t, h, u);
   };

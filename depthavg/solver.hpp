@@ -2,7 +2,8 @@
 // from an initial state to t_end, sampling h(x, t) and u(x, t) into a SurfaceSeries every dt_out.
 // It reports progress, stops early and keeps what it computed when the stop flag is raised
 // (Ctrl-C), and stops cleanly when the solution diverges, saying when, where and in which
-// quantity.
+// quantity. With SpaceParams::frame_speed c the equations are solved in the frame moving at c
+// (rhs.hpp) and each sample is translated back to the lab frame by c t (Fourier shift).
 #pragma once
 
 #include <atomic>
@@ -30,7 +31,8 @@ struct RunResult {
   double mass_initial = 0.0;    // integral of h over the domain [m^2]
   double mass_final = 0.0;
   double flux_final = 0.0;      // domain mean of q = h u at the last sample [m^2/s]
-  std::vector<double> final_state;  // U at t_reached
+  std::vector<double> final_state;  // U at t_reached, in the computational (possibly co-moving)
+                                    // frame; the series is always in the lab frame
   double mass_error() const { return std::fabs(mass_final - mass_initial) / mass_initial; }
 };
 

@@ -109,7 +109,8 @@ void write_sweep(const std::string& path, const SteadyState& s, double chi,
 }
 
 void run_sweep(const SweepOptions& o) {
-  parse_model(o.model);
+  if (parse_model(o.model) != Model::DepthAvg)
+    throw UsageError("--model: sweep runs {depthavg} only; use `granbench run --model twod`");
   const double chi = parse_chi(o.depthavg.chi);
   const auto Lxs = parse_range(o.Lx);
   const MuCurve curve = o.flow.make_curve();
@@ -124,6 +125,11 @@ void run_sweep(const SweepOptions& o) {
   lp.tolerance = o.tolerance;
   lp.t_end = o.t_end;
   lp.reconstruction = depthavg::parse_reconstruction(o.depthavg.limiter);
+  if (o.depthavg.frame_speed == "linear")
+    lp.co_moving = true;
+  else if (o.depthavg.frame_speed != "0")
+    throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +
+                     "' is not allowed for sweep; valid values {0, linear}");
 
   const std::size_t n = Lxs.size();
   std::vector<depthavg::LinearRunResult> res(n);
@@ -193,6 +199,7 @@ void run_sweep(const SweepOptions& o) {
                 {"chi", chi},
                 {"nx", o.nx},
                 {"tolerance", o.tolerance},
+                {"frame_speed", o.depthavg.frame_speed},
                 {"jobs", o.jobs},
                 {"wall_seconds", wall},
                 {"max_growth_relative_error_unstable", worst},

@@ -32,6 +32,11 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->check(one_of({"central", "minmod", "mc", "vanalbada"}))
       ->group(g)
       ->capture_default_str();
+  app.add_option("--frame-speed", o.frame_speed,
+                 "solve in the frame moving at this speed [m/s], or 'linear' for the seeded "
+                 "mode's (7.11) phase speed; output stays in the lab frame")
+      ->group(g)
+      ->capture_default_str();
 }
 
 double parse_chi(const std::string& text) {
@@ -49,6 +54,21 @@ double parse_chi(const std::string& text) {
 }
 
 namespace {
+
+double parse_frame_speed(const std::string& text, double linear_speed) {
+  if (text == "linear") return linear_speed;
+  double v = NAN;
+  try {
+    std::size_t used = 0;
+    v = std::stod(text, &used);
+    if (used != text.size()) v = NAN;
+  } catch (const std::exception&) {
+  }
+  if (!(std::fabs(v) <= 100.0))
+    throw UsageError("--frame-speed: '" + text + "' is not allowed; valid values: linear or a "
+                     "number in [-100, 100] m/s");
+  return v;
+}
 
 struct Measured {
   std::optional<SpectralGrowth> growth;
@@ -90,6 +110,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   space.nx = o.nx;
   space.chi = chi;
   space.reconstruction = depthavg::parse_reconstruction(mo.limiter);
+  space.frame_speed = parse_frame_speed(mo.frame_speed, exact.phase_speed);
   depthavg::IntegratorParams integ;
   integ.rtol = o.rtol;
   integ.atol = o.atol;
@@ -157,6 +178,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
       {"wave_speed", m.wave ? number_or_null(m.wave->speed) : nullptr},
       {"wave_speed_spread", m.wave ? number_or_null(m.wave->spread) : nullptr},
       {"dt_out", out.dt_out},
+      {"frame_speed", space.frame_speed},
       {"F", base.Fr},
       {"R", base.R},
       {"Gamma", base.Gamma},
@@ -169,7 +191,9 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
         {"angle_deg", o.flow.angle_deg}, {"h0", o.flow.h0}, {"Lx", o.Lx},
         {"nx", static_cast<double>(o.nx)}, {"a0", o.a0}, {"mode", static_cast<double>(o.mode)},
         {"noise", o.noise}, {"seed", static_cast<double>(o.seed)}, {"t_end", o.t_end},
-        {"dt_out", out.dt_out}, {"rtol", o.rtol}, {"atol", o.atol}, {"chi", chi},
+        {"dt_out", out.dt_out},
+      {"frame_speed", space.frame_speed}, {"rtol", o.rtol}, {"atol", o.atol}, {"chi", chi},
+        {"frame_speed", space.frame_speed},
         {"h_dry_fraction", space.h_dry_fraction}, {"mu_s", base.material.mu_s},
         {"mu_d", base.material.mu_d}, {"I0", base.material.I0}, {"d", base.material.d},
         {"phi", base.material.phi}, {"g", base.material.g}, {"mu_inf", base.material.mu_inf},

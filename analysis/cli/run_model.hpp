@@ -18,7 +18,7 @@
 
 namespace granbench::cli {
 
-enum class Model { DepthAvg };
+enum class Model { DepthAvg, TwoD };
 std::vector<std::string> model_names();
 Model parse_model(const std::string& name);
 
@@ -45,6 +45,7 @@ void add_run_options(CLI::App& app, RunOptions& o);
 struct DepthAvgOptions {
   std::string chi = "1";       // shape factor: 1, bagnold (5/4) or a number >= 1
   std::string limiter = "central";
+  std::string frame_speed = "0";  // computational frame: 0 (lab), linear, or a speed [m/s]
 };
 void add_depthavg_options(CLI::App& app, DepthAvgOptions& o);
 // Shape factor from its option text; UsageError naming --chi otherwise.

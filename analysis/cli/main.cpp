@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add_dispersion_command(app);
   add_run_command(app);
   add_sweep_command(app);
+  add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

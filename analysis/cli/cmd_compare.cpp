@@ -1,0 +1,225 @@
+// granbench compare: the main job. One chute flow (§7 defaults: 28.5 deg, h0 = 4 mm, Lz = 2 h0,
+// regularised curve) run with both models on the same rheology, each measured with the same
+// analysis code, beside the exact linear theories at the same k_hat: (7.11), its chi = 5/4 form
+// and the 2D linear stability. Prints the side-by-side table (or --json), writes compare.h5 (both
+// SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
+#include <cmath>
+#include <filesystem>
+#include <future>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <mutex>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "compare.hpp"
+#include "compare_output.hpp"
+#include "run_model.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+struct CompareOptions {
+  FlowOptions flow;
+  OutputOptions output;
+  double Lx = 0.08;
+  double a0 = 2e-5;
+  bool paper = false;
+  std::string init = "eigenmode";
+  double t_end = 4.0;
+  double dt_out = 0.0;
+  std::string resolution = "default";
+  int nx = 0, nz = 0;          // 2D grid; 0: from --resolution
+  std::size_t nx_depthavg = 0; // 0: from --resolution
+};
+
+struct Resolution {
+  int nx, nz;
+  std::size_t nx_depthavg;
+};
+Resolution resolution_preset(const std::string& name) {
+  if (name == "coarse") return {80, 16, 128};
+  if (name == "fine") return {320, 64, 512};
+  return {160, 32, 256};
+}
+
+nlohmann::json opt(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
+  nlohmann::json j{{"growth_rate", number_or_null(m.spectral.growth_rate)},
+                   {"phase_speed", number_or_null(m.spectral.phase_speed)},
+                   {"growth_rate_712", opt(m.growth_712)},
+                   {"fit_window", {m.spectral.amplitude_fit.t_first, m.spectral.amplitude_fit.t_last}},
+                   {"fit_r2", m.spectral.amplitude_fit.r2},
+                   {"fit_window_found", m.spectral.window_found},
+                   {"wave_speed", opt(m.wave_speed)},
+                   {"amplitude", opt(m.amplitude)},
+                   {"final_amplitude", m.final_amplitude},
+                   {"steps", r.steps},
+                   {"wall_seconds", r.wall_seconds},
+                   {"mass_error", r.mass_error},
+                   {"flux", r.flux},
+                   {"completed", r.outcome == RunOutcome::Completed}};
+  if (!r.message.empty()) j["message"] = r.message;
+  if (r.model == "twod") {
+    j["I_range"] = {r.I_min, r.I_max};
+    j["illposed_fraction"] = r.illposed_fraction;
+  }
+  return j;
+}
+
+void print_table(const Comparison& c) {
+  const auto& t = c.theory;
+  const auto& d = c.depthavg_measured.spectral;
+  const auto& w = c.twod_measured.spectral;
+  auto rel = [](double a, double b) { return 100.0 * (a - b) / std::fabs(b); };
+  std::cout << std::setprecision(4) << std::fixed
+            << "granbench compare: Lx = " << c.chute.Lx << " m, angle " << c.chute.angle_deg
+            << " deg, h0 = " << c.chute.h0 << " m, " << curve_name(c.chute.curve)
+            << " curve, k_hat = " << t.k_hat << "\n\n"
+            << "                           growth [1/s]   phase speed [m/s]\n"
+            << "  exact (7.11), chi = 1    " << std::setw(12) << t.exact.growth_rate
+            << std::setw(20) << t.exact.phase_speed << "\n"
+            << "  exact, chi = 5/4         " << std::setw(12) << t.exact_bagnold.growth_rate
+            << std::setw(20) << t.exact_bagnold.phase_speed << "\n"
+            << "  exact 2D linear          " << std::setw(12) << t.exact_2d.growth_rate
+            << std::setw(20) << t.exact_2d.phase_speed << "\n"
+            << "  depthavg (measured)      " << std::setw(12) << d.growth_rate << std::setw(20)
+            << d.phase_speed << "   vs (7.11): " << std::setprecision(2) << std::showpos
+            << rel(d.growth_rate, t.exact.growth_rate) << " %, "
+            << rel(d.phase_speed, t.exact.phase_speed) << " %\n"
+            << std::noshowpos << std::setprecision(4)
+            << "  twod (measured)          " << std::setw(12) << w.growth_rate << std::setw(20)
+            << w.phase_speed << "   vs 2D linear: " << std::setprecision(2) << std::showpos
+            << rel(w.growth_rate, t.exact_2d.growth_rate) << " %, "
+            << rel(w.phase_speed, t.exact_2d.phase_speed) << " %\n"
+            << std::noshowpos;
+  for (const auto* m : {&c.depthavg_measured, &c.twod_measured}) {
+    const char* name = m == &c.depthavg_measured ? "depthavg" : "twod";
+    const auto& fit = m->spectral.amplitude_fit;
+    std::cout << std::setprecision(3) << "  " << name << " growth fitted over t = [" << fit.t_first
+              << ", " << fit.t_last << "] s, R^2 = " << fit.r2
+              << (m->spectral.window_found ? "" : "  (no clean exponential window: treat with care)")
+              << "\n";
+    if (m->saturated)
+      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << *m->wave_speed
+                << " m/s, amplitude " << *m->amplitude * 1e3 << " mm\n";
+  }
+  std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
+            << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps
+            << " steps), 2D mass error " << std::scientific << std::setprecision(1)
+            << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3)
+            << c.twod.I_min << ", " << c.twod.I_max << "], ill-posed fraction "
+            << c.twod.illposed_fraction << "\n";
+}
+
+void run_compare(const CompareOptions& o) {
+  ChuteCase chute;
+  chute.material = o.flow.material;
+  chute.curve = o.flow.curve_kind();
+  chute.angle_deg = o.flow.angle_deg;
+  chute.h0 = o.flow.h0;
+  chute.Lx = o.Lx;
+  chute.a0 = o.paper ? 2e-4 : o.a0;
+  chute.seed = (o.paper || o.init == "sine") ? Seed::Sine : Seed::Eigenmode;
+  chute.t_end = o.t_end;
+  chute.dt_out = o.dt_out;
+  try {
+    (void)chute.steady();
+  } catch (const CurveRangeError& e) {
+    throw UsageError(std::string("--angle: ") + e.what());
+  }
+  if (chute.a0 >= chute.h0) throw UsageError("--a0: must be below h0; valid range (0, h0)");
+  const Resolution res = resolution_preset(o.resolution);
+  TwodSettings twod;
+  twod.nx = o.nx > 0 ? o.nx : res.nx;
+  twod.nz = o.nz > 0 ? o.nz : res.nz;
+  DepthAvgSettings depthavg;
+  depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.nx_depthavg;
+  depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
+
+  const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
+  const std::string png = o.output.plot.empty() ? "compare.png" : o.output.plot;
+  InterruptGuard guard;
+  std::mutex io;
+  const bool show = progress_enabled(o.output);
+  RunControl ctl;
+  ctl.stop = guard.flag();
+  if (show)
+    ctl.progress = [&](const std::string& model, double t, double t_end) {
+      std::lock_guard lock(io);
+      std::cerr << "\r  " << model << ": t = " << std::fixed << std::setprecision(2) << t << " / "
+                << t_end << " s   " << std::flush;
+    };
+
+  Comparison c;
+  c.chute = chute;
+  c.base = chute.steady();
+  // Both models at once (one core each); the exact theories meanwhile on this thread.
+  auto depthavg_run = std::async(std::launch::async, [&] { return run_depthavg(chute, depthavg, ctl); });
+  auto twod_run = std::async(std::launch::async, [&] { return run_twod(chute, twod, ctl); });
+  c.theory = exact_theories(chute);
+  c.depthavg = depthavg_run.get();
+  c.twod = twod_run.get();
+  if (show) std::cerr << "\n";
+  c.depthavg_measured = measure(c.depthavg.series);
+  c.twod_measured = measure(c.twod.series);
+
+  write_comparison(h5, c, twod, depthavg);
+  run_plot_script("compare.py", h5, png);
+
+  if (o.output.json) {
+    print_json({{"Lx", chute.Lx},
+                {"k_hat", c.theory.k_hat},
+                {"exact", {{"growth_rate", c.theory.exact.growth_rate},
+                           {"phase_speed", c.theory.exact.phase_speed}}},
+                {"exact_bagnold", {{"growth_rate", c.theory.exact_bagnold.growth_rate},
+                                   {"phase_speed", c.theory.exact_bagnold.phase_speed}}},
+                {"exact_2d", {{"growth_rate", c.theory.exact_2d.growth_rate},
+                              {"phase_speed", c.theory.exact_2d.phase_speed},
+                              {"convergence", c.theory.exact_2d_convergence}}},
+                {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
+                {"twod", model_json(c.twod, c.twod_measured)},
+                {"out", h5},
+                {"plot", png}});
+  } else {
+    print_table(c);
+    std::cout << "  wrote " << h5 << " and " << png << "\n";
+  }
+  for (const ModelRun* r : {&c.depthavg, &c.twod}) {
+    if (r->outcome == RunOutcome::Interrupted)
+      throw CommandFailed("interrupted; what was computed is in " + h5, 130);
+    if (r->outcome == RunOutcome::Diverged)
+      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5, 3);
+  }
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "compare", "run both models on one chute flow and compare them with exact linear theory");
+  add_flow_options(*sub, o->flow);
+  add_output_options(*sub, o->output);
+  sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")->check(positive())->capture_default_str();
+  sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")->check(positive())->capture_default_str();
+  sub->add_flag("--paper", o->paper, "the paper's start: sine (7.2) with a0 = 0.2 mm");
+  sub->add_option("--init", o->init, "initial perturbation {eigenmode,sine}")
+      ->check(one_of({"eigenmode", "sine"}))->capture_default_str();
+  sub->add_option("--t-end", o->t_end, "simulated time [s], > 0")->check(positive())->capture_default_str();
+  sub->add_option("--dt-out", o->dt_out, "sampling interval [s], > 0 (default: automatic)")->check(positive());
+  sub->add_option("--resolution", o->resolution,
+                  "grids {coarse: 80x16 / 128, default: 160x32 / 256, fine: 320x64 / 512}")
+      ->check(one_of({"coarse", "default", "fine"}))->capture_default_str();
+  sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  sub->add_option("--nz", o->nz, "2D cells across Lz = 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  sub->add_option("--nx-depthavg", o->nx_depthavg, "depth-averaged cells (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  sub->callback([o] { run_compare(*o); });
+}
+
+}  // namespace granbench::cli

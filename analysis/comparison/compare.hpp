@@ -1,0 +1,50 @@
+// The dual-model comparison: one chute flow run with both models, measured with the same
+// analysis code, beside three exact linear theories at the same wavenumber k_hat = 2 pi h0/Lx:
+//   exact          the paper's depth-averaged relation (7.11) (shape factor chi = 1);
+//   exact_bagnold  the same with the Bagnold shape factor chi = 5/4 (DESIGN.md §10);
+//   exact_2d       the full 2D linear stability of the Bagnold flow (linear_stability_2d.hpp).
+// Each model is measured by the spectral growth rate and phase speed of the seeded mode
+// (spectral_growth.hpp), the paper's estimator (7.12) over the same window, and, when the wave has
+// saturated, the nonlinear wave speed (wave_speed.hpp) and amplitude.
+#pragma once
+
+#include <optional>
+
+#include "chute_case.hpp"
+#include "model_runs.hpp"
+#include "spectral_growth.hpp"
+
+namespace granbench {
+
+struct TheoryValue {
+  double growth_rate = 0.0;  // [1/s]
+  double phase_speed = 0.0;  // [m/s]
+};
+
+struct Measurement {
+  SpectralGrowth spectral;
+  std::optional<double> growth_712;   // (7.12) averaged over the spectral fit's window
+  bool saturated = false;             // amplitude steady over the last fifth of the run
+  std::optional<double> wave_speed;   // [m/s], when saturated
+  std::optional<double> amplitude;    // (max h - min h)/2 at the end [m], when saturated
+  double final_amplitude = 0.0;       // (max h - min h)/2 at the end [m]
+};
+
+Measurement measure(const SurfaceSeries& s);
+
+struct Theories {
+  double k_hat = 0.0;
+  TheoryValue exact, exact_bagnold, exact_2d;
+  double exact_2d_convergence = 0.0;  // relative change of lambda_2d from N to N_check
+};
+Theories exact_theories(const ChuteCase& c);
+
+struct Comparison {
+  ChuteCase chute;
+  SteadyState base;
+  Theories theory;
+  ModelRun depthavg, twod;
+  Measurement depthavg_measured, twod_measured;
+};
+
+}  // namespace granbench

@@ -1,0 +1,73 @@
+// Writes compare.h5; see compare_output.hpp.
+#include "compare_output.hpp"
+
+#include <cmath>
+
+#include "hdf5_file.hpp"
+
+namespace granbench {
+
+namespace {
+
+void write_measurement(H5Writer& out, const std::string& g, const ModelRun& r,
+                       const Measurement& m) {
+  write_surface_series(out, g, r.series);
+  out.attribute(g, "growth_rate", m.spectral.growth_rate);
+  out.attribute(g, "phase_speed", m.spectral.phase_speed);
+  out.attribute(g, "fit_t_first", m.spectral.amplitude_fit.t_first);
+  out.attribute(g, "fit_t_last", m.spectral.amplitude_fit.t_last);
+  out.attribute(g, "fit_intercept", m.spectral.amplitude_fit.intercept);
+  out.attribute(g, "fit_r2", m.spectral.amplitude_fit.r2);
+  out.attribute(g, "growth_rate_712", m.growth_712.value_or(NAN));
+  out.attribute(g, "wave_speed", m.wave_speed.value_or(NAN));
+  out.attribute(g, "amplitude", m.amplitude.value_or(NAN));
+  out.attribute(g, "steps", static_cast<double>(r.steps));
+  out.attribute(g, "wall_seconds", r.wall_seconds);
+  out.attribute(g, "mass_error", r.mass_error);
+  out.attribute(g, "flux", r.flux);
+  out.attribute(g, "seeded_growth_rate", r.seeded_growth_rate);
+  out.attribute(g, "outcome", std::string(r.outcome == RunOutcome::Completed     ? "completed"
+                                          : r.outcome == RunOutcome::Interrupted ? "interrupted"
+                                                                                 : "diverged"));
+  if (!r.message.empty()) out.attribute(g, "message", r.message);
+}
+
+}  // namespace
+
+void write_comparison(const std::string& path, const Comparison& c, const TwodSettings& twod,
+                      const DepthAvgSettings& depthavg) {
+  H5Writer out(path);
+  write_measurement(out, "depthavg", c.depthavg, c.depthavg_measured);
+  write_measurement(out, "twod", c.twod, c.twod_measured);
+  out.attribute("twod", "I_min", c.twod.I_min);
+  out.attribute("twod", "I_max", c.twod.I_max);
+  out.attribute("twod", "illposed_fraction", c.twod.illposed_fraction);
+  out.create_group("theory");
+  out.attribute("theory", "k_hat", c.theory.k_hat);
+  out.attribute("theory", "exact_growth_rate", c.theory.exact.growth_rate);
+  out.attribute("theory", "exact_phase_speed", c.theory.exact.phase_speed);
+  out.attribute("theory", "exact_bagnold_growth_rate", c.theory.exact_bagnold.growth_rate);
+  out.attribute("theory", "exact_bagnold_phase_speed", c.theory.exact_bagnold.phase_speed);
+  out.attribute("theory", "exact_2d_growth_rate", c.theory.exact_2d.growth_rate);
+  out.attribute("theory", "exact_2d_phase_speed", c.theory.exact_2d.phase_speed);
+  out.attribute("theory", "exact_2d_convergence", c.theory.exact_2d_convergence);
+  // The resolved configuration.
+  const ChuteCase& k = c.chute;
+  const Material& m = k.material;
+  out.attribute("/", "curve", std::string(curve_name(k.curve)));
+  for (auto [name, v] :
+       {std::pair{"angle_deg", k.angle_deg}, {"h0", k.h0}, {"Lx", k.Lx}, {"a0", k.a0},
+        {"t_end", k.t_end}, {"mu_s", m.mu_s}, {"mu_d", m.mu_d}, {"I0", m.I0}, {"d", m.d},
+        {"phi", m.phi}, {"rho_star", m.rho_star}, {"g", m.g}, {"mu_inf", m.mu_inf},
+        {"alpha", m.alpha}, {"twod_nx", double(twod.nx)}, {"twod_nz", double(twod.nz)},
+        {"twod_Lz", twod.Lz_over_h0 * k.h0}, {"twod_eta_max", twod.eta_max},
+        {"twod_rho_light", twod.rho_light}, {"twod_eta_light", twod.eta_light},
+        {"depthavg_nx", double(depthavg.nx)}, {"depthavg_chi", depthavg.chi},
+        {"depthavg_rtol", depthavg.rtol}, {"I_zeta", c.base.I_zeta}, {"u_mean", c.base.u_mean},
+        {"Fr", c.base.Fr}})
+    out.attribute("/", name, v);
+  out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));
+  out.close();
+}
+
+}  // namespace granbench

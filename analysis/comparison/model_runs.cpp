@@ -1,0 +1,172 @@
+// Runs of either model on one ChuteCase; see model_runs.hpp.
+//
+// Seeding. With Seed::Eigenmode each model starts from the unstable normal mode of its own exact
+// linear theory, so that it grows as one clean mode from t = 0:
+//   depthavg  the mode (7.10) of (7.7)-(7.8) with the model's shape factor chi (dispersion.hpp);
+//   twod      the least-stable surface mode of the 2D linear stability (linear_stability_2d.hpp):
+//             surface h0 + a0 cos(kx) and u = U0(z) + Re(a0 u_hat(z) e^{ikx}); the 2D solver
+//             derives w from continuity and p from hydrostatics (initial_state.hpp).
+// With Seed::Sine both start from (7.2) with the Bagnold velocity of the local depth, as §7 does.
+#include "model_runs.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include "depthavg/initial_state.hpp"
+#include "depthavg/solver.hpp"
+#include "dispersion.hpp"
+#include "linear2d_chebyshev.hpp"
+#include "linear2d_eigenmode.hpp"
+#include "linear_stability_2d.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/solver.hpp"
+
+namespace granbench {
+
+double sampling_interval(const ChuteCase& c, double wave_speed_estimate) {
+  if (c.dt_out > 0.0) return c.dt_out;
+  const double period = c.Lx / std::max(std::fabs(wave_speed_estimate), 1e-6);
+  return std::min(0.02, period / 20.0);
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl) {
+  const MuCurve curve = c.make_curve();
+  const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
+  const DispersionMode exact = dispersion_mode(base, s.chi, c.Lx);
+
+  depthavg::SpaceParams space;
+  space.Lx = c.Lx;
+  space.nx = s.nx;
+  space.chi = s.chi;
+  space.reconstruction = s.limiter ? depthavg::Reconstruction::MC : depthavg::Reconstruction::Central;
+  depthavg::IntegratorParams integ;
+  integ.rtol = s.rtol;
+  integ.atol = 1e-4 * s.rtol * c.h0;
+  depthavg::InitialParams init;
+  init.kind = c.seed == Seed::Eigenmode ? depthavg::InitKind::Eigenmode : depthavg::InitKind::Sine;
+  init.a0 = c.a0;
+  depthavg::OutputParams out;
+  out.t_end = c.t_end;
+  out.dt_out = sampling_interval(c, exact.phase_speed);
+
+  const depthavg::Solver solver(base, curve, space, integ);
+  const auto U0 = depthavg::initial_state(solver.rhs(), init, exact.lambda_hat);
+  depthavg::RunCallbacks callbacks;
+  if (ctl.progress) callbacks.progress = [&](double t, double te) { ctl.progress("depthavg", t, te); };
+  callbacks.stop = ctl.stop;
+  depthavg::RunResult r = solver.run(U0, out, callbacks);
+
+  ModelRun m;
+  m.model = "depthavg";
+  m.series = std::move(r.series);
+  m.outcome = r.status == depthavg::RunStatus::Completed     ? RunOutcome::Completed
+              : r.status == depthavg::RunStatus::Interrupted ? RunOutcome::Interrupted
+                                                             : RunOutcome::Diverged;
+  m.message = r.message;
+  m.steps = r.stats.steps;
+  m.wall_seconds = r.wall_seconds;
+  m.mass_error = r.mass_error();
+  m.flux = r.flux_final;
+  m.seeded_growth_rate = exact.growth_rate;
+  return m;
+}
+
+namespace {
+
+// The 2D initial condition of the seeded eigenmode (see the file comment).
+twod::InitialCondition eigenmode_condition(const SteadyState& base, const MuCurve& curve,
+                                           const ChuteCase& c, int N, double& growth) {
+  Linear2DOptions opt;
+  opt.N = N;
+  opt.N_check = 0;
+  const Linear2DResult lin = linear_stability_2d(base, curve, c.Lx, opt);
+  growth = lin.surface.growth_rate;
+  const auto mode = std::make_shared<linear2d::Eigenmode>(
+      base, lin.base, lin.k_hat, linear2d::ChebyshevGrid(lin.N), opt.map, lin.surface_pair);
+  const double a = c.a0;
+  twod::InitialCondition ic;
+  ic.height = [mode, a](double x) { return mode->height(x, a); };
+  ic.velocity = [mode, a, h0 = base.h0](double x, double z) {
+    // Above the perturbed surface the light fluid starts with the surface speed (as (7.2) does).
+    const double zc = std::min(z, mode->height(x, a));
+    return mode->seeded_state(x, std::min(zc, h0), a).u;
+  };
+  return ic;
+}
+
+}  // namespace
+
+ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl) {
+  const MuCurve curve = c.make_curve();
+  const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
+  const twod::Grid grid(s.nx, s.nz, c.Lx, s.Lz_over_h0 * c.h0);
+  twod::SolverParams params;
+  params.zeta = base.zeta;
+  params.rheology.material = c.material;
+  params.rheology.curve = c.curve;
+  params.rheology.h0_for_curve = c.h0;
+  params.rheology.eta_max = s.eta_max;
+  params.rheology.rho_light = s.rho_light;
+  params.rheology.eta_light = s.eta_light;
+
+  ModelRun m;
+  m.model = "twod";
+  twod::InitialCondition ic = c.seed == Seed::Eigenmode
+                                  ? eigenmode_condition(base, curve, c, s.chebyshev_N,
+                                                        m.seeded_growth_rate)
+                                  : twod::perturbed_bagnold(base, c.a0, c.Lx);
+  twod::Solver solver(grid, params, twod::make_initial_state(grid, ic, params));
+
+  m.series = SurfaceSeries::uniform_grid(c.Lx, static_cast<std::size_t>(s.nx), c.h0);
+  auto sample = [&] {
+    const auto& st = solver.state();
+    m.series.append(st.t, twod::surface_heights(grid, st.f),
+                    twod::depth_averaged_velocity(grid, st));
+  };
+  // The 2D linear speed is close to the chi = 5/4 depth-averaged one (DESIGN.md §10).
+  const double dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
+  const auto start = Clock::now();
+  sample();
+  const int n_samples = static_cast<int>(std::ceil(c.t_end / dt_out - 1e-9));
+  for (int n = 1; n <= n_samples; ++n) {
+    if (ctl.stop && ctl.stop->load()) {
+      m.outcome = RunOutcome::Interrupted;
+      m.message = "interrupted at t = " + std::to_string(solver.state().t) + " s";
+      break;
+    }
+    try {
+      solver.advance_to(std::min(c.t_end, n * dt_out));
+    } catch (const twod::DivergenceError& e) {
+      m.outcome = RunOutcome::Diverged;
+      m.message = e.what();
+      break;
+    }
+    sample();
+    if (ctl.progress) ctl.progress("twod", solver.state().t, c.t_end);
+  }
+  m.wall_seconds = seconds_since(start);
+  const auto stats = solver.statistics();
+  m.steps = stats.steps;
+  m.mass_error = std::fabs(stats.mass_error());
+  m.flux = twod::mean_flux(grid, solver.state());
+  const auto rs = twod::rheology_stats(grid, solver.state().f, solver.properties().I_c, curve);
+  m.I_min = rs.I_min;
+  m.I_max = rs.I_max;
+  m.illposed_fraction = rs.illposed_fraction;
+  return m;
+}
+
+}  // namespace granbench

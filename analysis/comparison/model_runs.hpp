@@ -1,0 +1,48 @@
+// Running either model on a ChuteCase and returning the same record: the SurfaceSeries h(x, t)
+// and the run statistics that `granbench run --json` reports for both models (steps,
+// wall_seconds, mass_error, flux, and for the 2D model the range of I and the ill-posed fraction).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "chute_case.hpp"
+#include "surface_series.hpp"
+
+namespace granbench {
+
+enum class RunOutcome { Completed, Interrupted, Diverged };
+
+struct ModelRun {
+  std::string model;            // "depthavg" or "twod"
+  SurfaceSeries series;
+  RunOutcome outcome = RunOutcome::Completed;
+  std::string message;          // what stopped it early (time, place, quantity)
+  long steps = 0;
+  double wall_seconds = 0.0;
+  double mass_error = 0.0;      // relative
+  double flux = 0.0;            // mean downslope flux per unit width at the end [m^2/s]
+  double I_min = 0.0, I_max = 0.0;  // 2D only: over granular cells at the end
+  double illposed_fraction = 0.0;   // 2D only
+  double seeded_growth_rate = 0.0;  // the theory's growth rate of the seeded mode, if seeded
+};
+
+struct DepthAvgSettings {
+  std::size_t nx = 256;
+  double chi = 1.0;             // shape factor of the momentum flux
+  bool limiter = false;         // MC limiter (nonlinear runs) instead of central slopes
+  double rtol = 1e-7;
+};
+
+struct TwodSettings {
+  int nx = 160, nz = 32;
+  double Lz_over_h0 = 2.0;
+  double eta_max = 2.0;         // granular viscosity cap [Pa s] (DESIGN.md §8)
+  double rho_light = 1.5, eta_light = 1e-3;
+  int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
+};
+
+ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl = {});
+ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl = {});
+
+}  // namespace granbench

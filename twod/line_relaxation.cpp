@@ -34,31 +34,50 @@ void LineRelaxation::setup(const SpMat& A, std::vector<std::vector<int>> lines) 
       if (k + 1 < line.size()) upper_[r] = position(r, line[k + 1]);
       if (diag_[r] < 0) throw std::logic_error("LineRelaxation: missing diagonal");
     }
+  row_start_.assign(n + 1, 0);
+  off_pos_.clear();
+  off_col_.clear();
+  for (int r = 0; r < n; ++r) {
+    for (int p = outer[r]; p < outer[r + 1]; ++p)
+      if (p != diag_[r] && p != lower_[r] && p != upper_[r]) {
+        off_pos_.push_back(p);
+        off_col_.push_back(inner[p]);
+      }
+    row_start_[r + 1] = int(off_pos_.size());
+  }
+}
+
+void LineRelaxation::factorise(const SpMat& A) {
+  const double* val = A.valuePtr();
+  cp_.resize(A.rows());
+  inv_m_.resize(A.rows());
+  for (const auto& line : lines_)
+    for (std::size_t k = 0; k < line.size(); ++k) {
+      const int row = line[k];
+      const double a = lower_[row] >= 0 ? val[lower_[row]] : 0.0;
+      const double c = upper_[row] >= 0 ? val[upper_[row]] : 0.0;
+      const double m = val[diag_[row]] - (k > 0 ? a * cp_[line[k - 1]] : 0.0);
+      inv_m_[row] = 1.0 / m;
+      cp_[row] = c * inv_m_[row];
+    }
 }
 
 void LineRelaxation::solve_line(const SpMat& A, const Eigen::VectorXd& r, Eigen::VectorXd& z,
                                 std::size_t l) const {
   const auto& line = lines_[l];
   const int m = int(line.size());
-  thread_local std::vector<double> cp, dp;
-  cp.resize(m);
-  dp.resize(m);
-  const int* outer = A.outerIndexPtr();
-  const int* inner = A.innerIndexPtr();
   const double* val = A.valuePtr();
-  for (int k = 0; k < m; ++k) {
+  double d_prev = 0.0;
+  for (int k = 0; k < m; ++k) {  // forward elimination with the cached factors
     const int row = line[k];
     double rhs = r[row];
-    const int pd = diag_[row], pl = lower_[row], pu = upper_[row];
-    for (int p = outer[row]; p < outer[row + 1]; ++p)
-      if (p != pd && p != pl && p != pu) rhs -= val[p] * z[inner[p]];
-    const double a = pl >= 0 ? val[pl] : 0.0, c = pu >= 0 ? val[pu] : 0.0;
-    const double denom = val[pd] - (k > 0 ? a * cp[k - 1] : 0.0);
-    cp[k] = c / denom;
-    dp[k] = (rhs - (k > 0 ? a * dp[k - 1] : 0.0)) / denom;
+    for (int q = row_start_[row]; q < row_start_[row + 1]; ++q)
+      rhs -= val[off_pos_[q]] * z[off_col_[q]];
+    const double a = k > 0 ? val[lower_[row]] : 0.0;
+    d_prev = (rhs - a * d_prev) * inv_m_[row];
+    z[row] = d_prev;  // holds d'_k until the back substitution
   }
-  z[line[m - 1]] = dp[m - 1];
-  for (int k = m - 2; k >= 0; --k) z[line[k]] = dp[k] - cp[k] * z[line[k + 1]];
+  for (int k = m - 2; k >= 0; --k) z[line[k]] -= cp_[line[k]] * z[line[k + 1]];
 }
 
 void LineRelaxation::precondition(const SpMat& A, const Eigen::VectorXd& r,

@@ -46,6 +46,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("cfl", p.cfl);
   a("dt_max", p.dt_max);
   a("solver_tolerance", p.solver_tolerance);
+  a("viscous_tolerance", p.viscous_tolerance);
 }
 
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,

@@ -50,7 +50,8 @@ struct SolverParams {
   double dt_max = 1e-3;        // [s]
   double dt_initial = 1e-5;    // first step [s]
   double dt_growth = 1.1;      // largest ratio dt_{n+1}/dt_n
-  double solver_tolerance = 1e-10;  // relative residual of the linear solves
+  double solver_tolerance = 1e-10;  // relative residual of the projection (sets div u, mass)
+  double viscous_tolerance = 1e-8;  // relative residual of the viscous solve
   LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
   LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;
   double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]

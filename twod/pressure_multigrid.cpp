@@ -20,13 +20,31 @@ void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(nx * nz);
   for (int i = 0; i < nx; ++i) {
     const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
+    const double* cl = &cx[cell(i, 0)];
+    const double* cr = &cx[cell(ir, 0)];
+    const double* czi = &cz[zface(i, 0)];
+    const double* xi = &x[cell(i, 0)];
+    const double* xl = &x[cell(il, 0)];
+    const double* xr = &x[cell(ir, 0)];
+    double* yi = &y[cell(i, 0)];
+    for (int k = 0; k < nz; ++k)
+      yi[k] = cl[k] * (xi[k] - xl[k]) + cr[k] * (xi[k] - xr[k]) + (czi[k] + czi[k + 1]) * xi[k];
+    for (int k = 1; k < nz; ++k) yi[k] -= czi[k] * xi[k - 1];   // bed face has czi[0] = 0
+    for (int k = 0; k < nz - 1; ++k) yi[k] -= czi[k + 1] * xi[k + 1];
+  }
+}
+
+void PoissonLevel::factorise() {
+  cp.resize(nx * nz);
+  inv_m.resize(nx * nz);
+  for (int i = 0; i < nx; ++i) {
+    const int ir = i == nx - 1 ? 0 : i + 1;
     for (int k = 0; k < nz; ++k) {
       const int c = cell(i, k);
-      const double cl = cx[c], cr = cx[cell(ir, k)], cb = cz[zface(i, k)], ct = cz[zface(i, k + 1)];
-      double v = cl * (x[c] - x[cell(il, k)]) + cr * (x[c] - x[cell(ir, k)]) + (cb + ct) * x[c];
-      if (k > 0) v -= cb * x[c - 1];
-      if (k < nz - 1) v -= ct * x[c + 1];
-      y[c] = v;
+      const double diag = cx[c] + cx[cell(ir, k)] + cz[zface(i, k)] + cz[zface(i, k + 1)];
+      const double lower = k > 0 ? -cz[zface(i, k)] : 0.0, upper = k < nz - 1 ? -cz[zface(i, k + 1)] : 0.0;
+      inv_m[c] = 1.0 / (diag - (k > 0 ? lower * cp[c - 1] : 0.0));
+      cp[c] = upper * inv_m[c];
     }
   }
 }
@@ -60,6 +78,7 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
         C.cz[C.zface(i, k)] = 0.5 * (F.cz[F.zface(2 * i, 2 * k)] + F.cz[F.zface(2 * i + 1, 2 * k)]);
     }
   }
+  for (PoissonLevel& L : levels_) L.factorise();
   const PoissonLevel& B = levels_.back();
   const int n = B.nx * B.nz;
   direct_coarsest_ = n <= 2048;
@@ -78,30 +97,28 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
 void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b,
                                    Eigen::VectorXd& x, bool forward) const {
   const int nx = L.nx, nz = L.nz;
-  thread_local std::vector<double> cp, dp;
-  cp.resize(nz);
-  dp.resize(nz);
   for (int n = 0; n < nx; ++n) {
     const int i = forward ? n : nx - 1 - n;
     const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
-    // Thomas algorithm on column i: -cb x_{k-1} + diag x_k - ct x_{k+1} = rhs
-    const double* cl = &L.cx[L.cell(i, 0)];
+    // Thomas algorithm on column i with the factors of factorise(): -cb x_{k-1} + diag x_k
+    // - ct x_{k+1} = b + x-neighbour terms
+    const int c0 = L.cell(i, 0);
+    const double* cl = &L.cx[c0];
     const double* cr = &L.cx[L.cell(ir, 0)];
     const double* cz = &L.cz[L.zface(i, 0)];
+    const double* cp = &L.cp[c0];
+    const double* inv_m = &L.inv_m[c0];
     const double* xl = &x[L.cell(il, 0)];
     const double* xr = &x[L.cell(ir, 0)];
-    const double* bi = &b[L.cell(i, 0)];
-    double* xi = &x[L.cell(i, 0)];
+    const double* bi = &b[c0];
+    double* xi = &x[c0];
+    double d = 0.0;
     for (int k = 0; k < nz; ++k) {
-      const double diag = cl[k] + cr[k] + cz[k] + cz[k + 1];
       const double rhs = bi[k] + cl[k] * xl[k] + cr[k] * xr[k];
-      const double lower = k > 0 ? -cz[k] : 0.0, upper = k < nz - 1 ? -cz[k + 1] : 0.0;
-      const double m = diag - (k > 0 ? lower * cp[k - 1] : 0.0);
-      cp[k] = upper / m;
-      dp[k] = (rhs - (k > 0 ? lower * dp[k - 1] : 0.0)) / m;
+      d = (rhs + cz[k] * d) * inv_m[k];  // lower = -cz[k]; d = 0 for k = 0
+      xi[k] = d;
     }
-    xi[nz - 1] = dp[nz - 1];
-    for (int k = nz - 2; k >= 0; --k) xi[k] = dp[k] - cp[k] * xi[k + 1];
+    for (int k = nz - 2; k >= 0; --k) xi[k] -= cp[k] * xi[k + 1];
   }
 }
 
@@ -126,12 +143,18 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   const PoissonLevel& C = levels_[l + 1];
   Eigen::VectorXd& rc = rhs_c_[l + 1];
   rc.setZero(C.nx * C.nz);
-  for (int i = 0; i < L.nx; ++i)
-    for (int k = 0; k < L.nz; ++k) rc[C.cell(i / 2, k / 2)] += res_[l][L.cell(i, k)];  // R = P^T
+  for (int i = 0; i < L.nx; ++i) {  // R = P^T: sum of the 2 x 2 fine cells
+    const double* r = &res_[l][L.cell(i, 0)];
+    double* rci = &rc[C.cell(i / 2, 0)];
+    for (int k = 0; k < L.nz; k += 2) rci[k / 2] += r[k] + r[k + 1];
+  }
   Eigen::VectorXd& xc = x_c_[l + 1];
   vcycle(l + 1, rc, xc);
-  for (int i = 0; i < L.nx; ++i)
-    for (int k = 0; k < L.nz; ++k) x[L.cell(i, k)] += xc[C.cell(i / 2, k / 2)];  // P
+  for (int i = 0; i < L.nx; ++i) {  // P: piecewise constant
+    double* xi = &x[L.cell(i, 0)];
+    const double* xci = &xc[C.cell(i / 2, 0)];
+    for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
+  }
   line_sweep(L, b, x, false);
 }
 

@@ -16,6 +16,8 @@ struct PoissonLevel {
   std::vector<double> cz;    // z-face coefficients at i (nz + 1) + k, k = 0 (bed) .. nz (top)
   int cell(int i, int k) const { return i * nz + k; }
   int zface(int i, int k) const { return i * (nz + 1) + k; }
+  std::vector<double> cp, inv_m;  // Thomas factors of the column blocks (set by factorise())
+  void factorise();
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 };
 

@@ -49,7 +49,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   // Unknown of cell (i, k): i nz + k (column by column, as the multigrid stores it).
   auto id = [&](int i, int k) { return g.wrap(i) * nz + k; };
   b_.resize(n);
-  x_.setZero(n);
+  if (x_.size() != n) x_.setZero(n);  // warm start: the previous step's increment
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
   int iterations = 0;

@@ -97,6 +97,7 @@ int SpdSolver::solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& 
     case LinearSolverKind::LineRelaxation:
     case LinearSolverKind::Multigrid:  // (multigrid is matrix-free, in the projection)
       if (!line_.ready()) line_.setup(A, lines_);
+      line_.factorise(A);
       it = run(A, b, x, 2000);
       break;
     case LinearSolverKind::StaleCholesky:

@@ -23,7 +23,7 @@ namespace granbench::twod {
 ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
     : g_(g), gx_(params.rheology.material.g * std::sin(params.zeta)),
       gz_(-params.rheology.material.g * std::cos(params.zeta)),
-      solver_(params.viscous_solver, params.solver_tolerance) {
+      solver_(params.viscous_solver, params.viscous_tolerance) {
   // Lines for the line-relaxation preconditioner: the u's and the w's of each column.
   const int nx = g.nx, nz = g.nz, nu = nx * nz;
   std::vector<std::vector<int>> lines;

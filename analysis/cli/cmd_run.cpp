@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "run_model.hpp"
+#include "run_twod.hpp"
 
 namespace granbench::cli {
 
@@ -37,16 +38,17 @@ InterruptGuard::InterruptGuard() {
 InterruptGuard::~InterruptGuard() { std::signal(SIGINT, previous_handler()); }
 const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
 
-std::vector<std::string> model_names() { return {"depthavg"}; }
+std::vector<std::string> model_names() { return {"depthavg", "twod"}; }
 
 Model parse_model(const std::string& name) {
   if (name == "depthavg") return Model::DepthAvg;
-  throw UsageError("--model: '" + name + "' is not available; valid values {depthavg}");
+  if (name == "twod") return Model::TwoD;
+  throw UsageError("--model: '" + name + "' is not available; valid values {depthavg,twod}");
 }
 
 void add_run_options(CLI::App& app, RunOptions& o) {
   add_flow_options(app, o.flow);
-  app.add_option("--model", o.model, "model {depthavg}")
+  app.add_option("--model", o.model, "model {depthavg,twod}")
       ->check(one_of(model_names()))
       ->capture_default_str();
   app.add_option("--Lx", o.Lx, "domain length Lx [m], > 0")->check(positive())->capture_default_str();
@@ -83,11 +85,13 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 void add_run_command(CLI::App& app) {
   auto run = std::make_shared<RunOptions>();
   auto depthavg = std::make_shared<DepthAvgOptions>();
+  auto twod = std::make_shared<TwodOptions>();
   CLI::App* sub = app.add_subcommand(
       "run", "simulate the periodic chute flow from a perturbation; measure growth and speed");
   add_run_options(*sub, *run);
   add_depthavg_options(*sub, *depthavg);
-  sub->callback([run, depthavg] {
+  add_twod_options(*sub, *twod);
+  sub->callback([run, depthavg, twod] {
     if (!(run->a0 < run->flow.h0))
       throw UsageError("--a0: " + std::to_string(run->a0) + " out of range; valid range [0, h0)");
     if (static_cast<std::size_t>(run->mode) > run->nx / 2)
@@ -95,6 +99,9 @@ void add_run_command(CLI::App& app) {
     switch (parse_model(run->model)) {
       case Model::DepthAvg:
         run_depthavg(*run, *depthavg);
+        break;
+      case Model::TwoD:
+        run_twod(*run, *twod);
         break;
     }
   });

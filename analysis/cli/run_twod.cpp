@@ -1,0 +1,301 @@
+// granbench run --model twod: the §7 rollwave (or any periodic chute flow) with the full 2D
+// incompressible mu(I) equations (2.9)-(2.11) and a VOF free surface (twod/).
+//
+//   granbench run --model twod --angle 28.5 --h0 0.004 --a0 2e-4 --Lx 0.08 --nx 256 --nz 64
+//                 --t-end 10 --out roll.h5          (roll.h5 + roll.xdmf for ParaView)
+//   granbench run --model twod --restart roll.checkpoint.h5 --t-end 10 ...
+//
+// Output: the SurfaceSeries h(x, t) (/surface), 2D snapshots (/snapshots, indexed by the XDMF
+// file), the run statistics and every parameter (/parameters). Ctrl-C or SIGTERM writes a
+// checkpoint and the outputs, then exits with code 130; a diverging run reports time, place and
+// quantity, saves what it computed and exits with code 3.
+#include "run_twod.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "checkpoint.hpp"
+#include "commands.hpp"
+#include "diagnostics.hpp"
+#include "hdf5_file.hpp"
+#include "initial_state.hpp"
+#include "output.hpp"
+#include "solver.hpp"
+#include "spectral_growth.hpp"
+#include "steady_state.hpp"
+#include "wave_speed.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+extern "C" void forward_sigterm(int) { std::raise(SIGINT); }  // SIGTERM behaves like Ctrl-C
+
+std::string replace_extension(const std::string& path, const std::string& ext) {
+  return std::filesystem::path(path).replace_extension(ext).string();
+}
+
+}  // namespace
+
+void add_twod_options(CLI::App& app, TwodOptions& o) {
+  app.add_option("--nz", o.nz, "twod: cells along z, in [4, 4096]")
+      ->check(CLI::Range(4, 4096))
+      ->capture_default_str();
+  app.add_option("--Lz", o.Lz, "twod: domain height [m], > h0 + a0; default 2 h0")
+      ->check(positive());
+  app.add_option("--eta-max", o.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--eta-min", o.eta_min, "twod: floor on the granular viscosity [Pa s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--D-min", o.D_min, "twod: floor on |D| [1/s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--rho-light", o.rho_light, "twod: light-fluid density [kg/m^3], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--eta-light", o.eta_light, "twod: light-fluid viscosity [Pa s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--mixing", o.mixing, "twod: viscosity in interface cells {arithmetic,harmonic}")
+      ->check(one_of({"arithmetic", "harmonic"}))
+      ->capture_default_str();
+  app.add_option("--cfl", o.cfl, "twod: Courant number per direction, in (0, 0.5)")
+      ->check(open_range(0.0, 0.5))
+      ->capture_default_str();
+  app.add_option("--dt-max", o.dt_max, "twod: largest time step [s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  app.add_option("--tolerance", o.tolerance, "twod: relative residual of the linear solves, in (0, 1e-3)")
+      ->check(open_range(0.0, 1e-3))
+      ->capture_default_str();
+  app.add_option("--dt-snapshot", o.dt_snapshot,
+                 "twod: interval of the 2D field snapshots [s], > 0; default t_end/10")
+      ->check(positive());
+  app.add_option("--checkpoint", o.checkpoint,
+                 "twod: checkpoint written on SIGINT/SIGTERM; default <out>.checkpoint.h5");
+  app.add_option("--restart", o.restart, "twod: continue from this checkpoint file")
+      ->check(CLI::ExistingFile);
+}
+
+void run_twod(const RunOptions& o, const TwodOptions& mo) {
+  using namespace granbench::twod;
+  // --- parameters (validated before anything is written) ---
+  if (o.init != "sine") throw UsageError("--init: 'eigenmode' is not available for --model twod; valid {sine}");
+  if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
+  const MuCurve curve = o.flow.make_curve();
+  const double zeta = degrees_to_radians(o.flow.angle_deg);
+  SteadyState base;
+  try {
+    base = steady_state(curve, zeta, o.flow.h0);
+  } catch (const CurveRangeError& e) {
+    throw UsageError(std::string("--angle: ") + e.what());
+  }
+  const double Lz = mo.Lz > 0.0 ? mo.Lz : 2.0 * o.flow.h0;
+  if (!(Lz > o.flow.h0 + o.a0))
+    throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
+  if (!(mo.eta_min < mo.eta_max))
+    throw UsageError("--eta-min: must be below --eta-max (" + std::to_string(mo.eta_max) + ")");
+  SolverParams params;
+  params.zeta = zeta;
+  params.rheology.material = o.flow.material;
+  params.rheology.curve = curve.kind();
+  params.rheology.h0_for_curve = o.flow.h0;
+  params.rheology.eta_max = mo.eta_max;
+  params.rheology.eta_min = mo.eta_min;
+  params.rheology.D_min = mo.D_min;
+  params.rheology.rho_light = mo.rho_light;
+  params.rheology.eta_light = mo.eta_light;
+  params.rheology.mixing =
+      mo.mixing == "harmonic" ? ViscosityMixing::Harmonic : ViscosityMixing::Arithmetic;
+  params.cfl = mo.cfl;
+  params.dt_max = mo.dt_max;
+  params.solver_tolerance = mo.tolerance;
+
+  std::optional<Checkpoint> restart;
+  if (!mo.restart.empty()) {
+    try {
+      restart = read_checkpoint(mo.restart);
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--restart: ") + e.what());
+    }
+    if (restart->grid.nx != int(o.nx) || restart->grid.nz != mo.nz ||
+        std::abs(restart->grid.Lx - o.Lx) > 1e-12 * o.Lx || std::abs(restart->grid.Lz - Lz) > 1e-12 * Lz)
+      throw UsageError("--restart: the checkpoint's grid (" + std::to_string(restart->grid.nx) + " x " +
+                       std::to_string(restart->grid.nz) + ") differs from --nx/--nz/--Lx/--Lz");
+    if (!(restart->state.t < o.t_end))
+      throw UsageError("--t-end: must exceed the checkpoint's time " + std::to_string(restart->state.t));
+  }
+  const Grid grid(int(o.nx), mo.nz, o.Lx, Lz);
+  const double wavelength = o.Lx / o.mode;
+  const double dt_out = o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface));
+  const double dt_snap = mo.dt_snapshot > 0.0 ? mo.dt_snapshot : o.t_end / 10.0;
+  const std::string checkpoint_path =
+      !mo.checkpoint.empty() ? mo.checkpoint
+      : !o.output.out.empty() ? replace_extension(o.output.out, ".checkpoint.h5")
+                              : std::string("twod.checkpoint.h5");
+
+  // --- initial state ---
+  auto ic = perturbed_bagnold(base, o.a0, wavelength);
+  Solver solver(grid, params, restart ? restart->state : make_initial_state(grid, ic, params));
+  SurfaceSeries series = SurfaceSeries::uniform_grid(o.Lx, o.nx, o.flow.h0);
+  if (restart) {
+    solver.resume(restart->steps, restart->dt_last, restart->initial_volume);
+    if (restart->series.nt() > 0) series = restart->series;
+  }
+  auto sample = [&] {
+    series.append(solver.state().t, surface_heights(grid, solver.state().f),
+                  depth_averaged_velocity(grid, solver.state()));
+  };
+  if (series.nt() == 0) sample();
+
+  std::unique_ptr<H5Writer> h5;
+  std::unique_ptr<SnapshotWriter> snaps;
+  if (!o.output.out.empty()) {
+    h5 = std::make_unique<H5Writer>(o.output.out);
+    snaps = std::make_unique<SnapshotWriter>(
+        *h5, std::filesystem::path(o.output.out).filename().string(),
+        replace_extension(o.output.out, ".xdmf"), grid);
+    snaps->write(solver);
+  }
+
+  // --- time loop ---
+  const InterruptGuard guard;
+  const auto previous_term = std::signal(SIGTERM, forward_sigterm);
+  const bool progress = progress_enabled(o.output);
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
+  double next_sample = solver.state().t + dt_out, next_snap = solver.state().t + dt_snap;
+  double I_lo = INFINITY, I_hi = 0.0, ill_max = 0.0, last_report = 0.0;
+  RheologyStats rs;
+  std::string status = "completed", message;
+  try {
+    while (solver.state().t < o.t_end * (1.0 - 1e-12)) {
+      if (guard.flag()->load()) {
+        status = "interrupted";
+        message = "interrupted at t = " + std::to_string(solver.state().t) + " s; checkpoint " + checkpoint_path;
+        break;
+      }
+      const double target = std::min({next_sample, next_snap, o.t_end});
+      solver.step(target - solver.state().t);
+      if (solver.state().t >= target * (1.0 - 1e-12)) {
+        if (solver.state().t >= next_sample * (1.0 - 1e-12)) {
+          sample();
+          rs = rheology_stats(grid, solver.state().f, solver.properties().I_c, curve);
+          if (std::isfinite(rs.I_min)) I_lo = std::min(I_lo, rs.I_min), I_hi = std::max(I_hi, rs.I_max);
+          ill_max = std::max(ill_max, rs.illposed_fraction);
+          next_sample += dt_out;
+        }
+        if (solver.state().t >= next_snap * (1.0 - 1e-12)) {
+          if (snaps) snaps->write(solver);
+          next_snap += dt_snap;
+        }
+      }
+      if (progress && wall() - last_report > 1.0) {
+        last_report = wall();
+        const double t = solver.state().t;
+        std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << t << " / " << o.t_end
+                  << " s, step " << solver.statistics().steps << ", dt " << std::scientific
+                  << std::setprecision(2) << solver.statistics().dt_last << " s, wall "
+                  << std::fixed << std::setprecision(0) << last_report << " s    " << std::flush;
+      }
+    }
+  } catch (const DivergenceError& e) {
+    status = "diverged";
+    message = e.what();
+  }
+  std::signal(SIGTERM, previous_term);
+  if (progress) std::cerr << "\n";
+  if (status == "interrupted") write_checkpoint(checkpoint_path, solver, series);
+
+  // --- results ---
+  const RunStatistics st = solver.statistics();
+  std::optional<SpectralGrowth> growth;
+  std::optional<WaveSpeed> wave;
+  if (series.nt() >= 8) {
+    try {
+      growth = spectral_growth(series, o.mode);
+    } catch (const std::invalid_argument&) {
+    }
+    try {
+      wave = wave_speed(series, 0.5 * series.t.back(), series.t.back());
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  const auto last_h = series.h_at(series.nt() - 1);
+  double h_mean = 0.0;
+  for (double v : last_h) h_mean += v / double(last_h.size());
+  nlohmann::json j = {
+      {"model", "twod"},
+      {"status", status},
+      {"message", message},
+      {"t_reached", solver.state().t},
+      {"steps", st.steps},
+      {"viscous_iterations", st.viscous_iterations},
+      {"projection_iterations", st.projection_iterations},
+      {"wall_seconds", wall()},
+      {"cell_updates_per_second", double(st.steps) * grid.cells() / std::max(wall(), 1e-9)},
+      {"mass_error", st.mass_error()},
+      {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
+      {"max_divergence", st.max_divergence},
+      {"dt_min", st.dt_min},
+      {"dt_max", st.dt_max},
+      {"h_mean", h_mean},
+      {"flux", mean_flux(grid, solver.state())},
+      {"growth_rate", growth ? number_or_null(growth->growth_rate) : nullptr},
+      {"phase_speed", growth ? number_or_null(growth->phase_speed) : nullptr},
+      {"growth_window", growth ? nlohmann::json{growth->amplitude_fit.t_first, growth->amplitude_fit.t_last}
+                               : nullptr},
+      {"growth_window_found", growth ? nlohmann::json(growth->window_found) : nullptr},
+      {"wave_speed", wave ? number_or_null(wave->speed) : nullptr},
+      {"wave_speed_spread", wave ? number_or_null(wave->spread) : nullptr},
+      {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nullptr},
+      {"illposed_fraction", rs.illposed_fraction},
+      {"illposed_fraction_max", ill_max},
+      {"eta_max", mo.eta_max},
+      {"dt_out", dt_out},
+      {"F", base.Fr},
+      {"u_mean", base.u_mean}};
+
+  if (h5) {
+    write_surface_series(*h5, "/surface", series);
+    write_parameters(*h5, "/parameters", grid, params);
+    h5->attribute("/", "model", "twod");
+    h5->attribute("/", "status", status);
+    h5->attribute("/", "message", message);
+    h5->attribute("/", "a0", o.a0);
+    h5->attribute("/", "h0", o.flow.h0);
+    h5->attribute("/", "t_end", o.t_end);
+    h5->attribute("/", "results_json", j.dump());
+    snaps->finish();
+    h5->close();
+  }
+  if (o.output.json) {
+    print_json(j);
+  } else {
+    auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
+    std::cout << "twod run (" << status << "), " << o.flow.curve << " curve, angle " << o.flow.angle_deg
+              << " deg, h0 = " << o.flow.h0 << " m, " << grid.nx << " x " << grid.nz << " cells on "
+              << grid.Lx << " x " << grid.Lz << " m\n"
+              << "  t reached        " << solver.state().t << " s in " << wall() << " s wall, "
+              << st.steps << " steps\n"
+              << "  mass error       " << st.mass_error() << " (relative)\n"
+              << "  h mean, flux     " << h_mean << " m, " << j["flux"].get<double>() << " m^2/s\n"
+              << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
+              << show("phase_speed") << " m/s\n"
+              << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
+              << "  I range          " << (std::isfinite(I_lo) ? std::to_string(I_lo) + " .. " + std::to_string(I_hi) : "-")
+              << ", ill-posed fraction " << rs.illposed_fraction << " (max " << ill_max << ")\n";
+  }
+  if (status == "interrupted") throw CommandFailed(message + "; the samples computed so far were kept", 130);
+  if (status == "diverged") throw CommandFailed(message, 3);
+}
+
+}  // namespace granbench::cli

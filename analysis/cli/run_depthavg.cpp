@@ -39,15 +39,22 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->capture_default_str();
 }
 
-double parse_chi(const std::string& text) {
-  if (text == "bagnold") return 1.25;
-  double v = NAN;
+namespace {
+// The whole text as a number, NaN otherwise.
+double number_or_nan(const std::string& text) {
   try {
     std::size_t used = 0;
-    v = std::stod(text, &used);
-    if (used != text.size()) v = NAN;
+    const double v = std::stod(text, &used);
+    return used == text.size() ? v : NAN;
   } catch (const std::exception&) {
+    return NAN;
   }
+}
+}  // namespace
+
+double parse_chi(const std::string& text) {
+  if (text == "bagnold") return 1.25;
+  const double v = number_or_nan(text);
   if (!(v >= 1.0 && v <= 2.0))
     throw UsageError("--chi: '" + text + "' is not allowed; valid values: bagnold or a number in [1, 2]");
   return v;
@@ -57,13 +64,7 @@ namespace {
 
 double parse_frame_speed(const std::string& text, double linear_speed) {
   if (text == "linear") return linear_speed;
-  double v = NAN;
-  try {
-    std::size_t used = 0;
-    v = std::stod(text, &used);
-    if (used != text.size()) v = NAN;
-  } catch (const std::exception&) {
-  }
+  const double v = number_or_nan(text);
   if (!(std::fabs(v) <= 100.0))
     throw UsageError("--frame-speed: '" + text + "' is not allowed; valid values: linear or a "
                      "number in [-100, 100] m/s");

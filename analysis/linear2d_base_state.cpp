@@ -23,9 +23,9 @@ LinearBaseState mu_i_base_state(const SteadyState& s, const MuCurve& curve) {
   b.F = s.Fr;
   b.mu = std::tan(s.zeta);
   b.Gamma = s.I_zeta * curve.dmu_dI(s.I_zeta);
-  b.q = b.mu - 0.5 * b.Gamma;       // (3.3b)
-  b.eta_n0 = 0.4 * b.mu;            // mu p0 / |dU0/dz| = (2 mu/5) sqrt(1 - z)   (2.11)
-  b.eta_s0 = 0.4 * b.Gamma;         // (I mu'/mu) eta_n: the tangent viscosity, along A in (3.2)
+  b.q = b.mu - 0.5 * b.Gamma;  // (3.3b)
+  b.eta_n0 = 0.4 * b.mu;       // mu p0 / |dU0/dz| = (2 mu/5) sqrt(1 - z)   (2.11)
+  b.eta_s0 = 0.4 * b.Gamma;    // (I mu'/mu) eta_n: the tangent viscosity, along A in (3.2)
   b.beta = 0.5;
   return b;
 }
@@ -43,6 +43,8 @@ LinearBaseState newtonian_film_base_state(double F, double zeta_rad) {
   return b;
 }
 
-double newtonian_film_reynolds(const LinearBaseState& b) { return 3.0 * b.F * b.F / b.mu; }
+double newtonian_film_reynolds(const LinearBaseState& b) {
+  return 3.0 * b.F * b.F / b.mu;
+}
 
 }  // namespace granbench::linear2d

@@ -4,7 +4,8 @@
 // Scales: length h0, velocity u_bar_0, time h0/u_bar_0, stress rho_* phi g cos(zeta) h0 (7.13).
 // In these units the Bagnold state (5.4)-(5.5) of the mu(I)-rheology is
 //
-//   p0 = 1 - z,   tau0_xz = mu (1 - z),   U0 = (5/3)(1 - (1 - z)^{3/2}),   U0' = (5/2)(1 - z)^{1/2},
+//   p0 = 1 - z,   tau0_xz = mu (1 - z),   U0 = (5/3)(1 - (1 - z)^{3/2}),   U0' = (5/2)(1 -
+//   z)^{1/2},
 //
 // and the linearised deviatoric stress (the finite-wavelength form of (3.2)-(3.3)) is
 //
@@ -27,13 +28,13 @@ enum class BaseProfile { Bagnold, Nusselt };
 
 struct LinearBaseState {
   BaseProfile profile = BaseProfile::Bagnold;
-  double F = 0.0;      // Froude number u_bar_0 / sqrt(g h0 cos zeta)  (7.1)
-  double mu = 0.0;     // tan(zeta): base friction, and the surface gradient of tau0_xz is -mu
-  double Gamma = 0.0;  // I_zeta mu'(I_zeta), (7.9a) generalised; 0 for the Newtonian film
-  double q = 0.0;      // pressure coefficient of the shear stress (3.3b); 0 for the film
-  double eta_n0 = 0.0; // eta_n = eta_n0 (1 - z)^beta
-  double eta_s0 = 0.0; // eta_s = eta_s0 (1 - z)^beta
-  double beta = 0.5;   // 1/2 (mu(I): eta ~ sqrt(p0)) or 0 (Newtonian)
+  double F = 0.0;       // Froude number u_bar_0 / sqrt(g h0 cos zeta)  (7.1)
+  double mu = 0.0;      // tan(zeta): base friction, and the surface gradient of tau0_xz is -mu
+  double Gamma = 0.0;   // I_zeta mu'(I_zeta), (7.9a) generalised; 0 for the Newtonian film
+  double q = 0.0;       // pressure coefficient of the shear stress (3.3b); 0 for the film
+  double eta_n0 = 0.0;  // eta_n = eta_n0 (1 - z)^beta
+  double eta_s0 = 0.0;  // eta_s = eta_s0 (1 - z)^beta
+  double beta = 0.5;    // 1/2 (mu(I): eta ~ sqrt(p0)) or 0 (Newtonian)
 
   double U0(double z) const;   // base velocity
   double dU0(double z) const;  // dU0/dz

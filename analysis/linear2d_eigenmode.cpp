@@ -42,9 +42,15 @@ std::complex<double> Eigenmode::at(const Eigen::VectorXcd& f, double z) const {
   return grid_.interpolate(f, map_coordinate(map_, zc / steady_.h0));
 }
 
-std::complex<double> Eigenmode::u_hat(double z) const { return at(u_, z); }
-std::complex<double> Eigenmode::w_hat(double z) const { return at(w_, z); }
-std::complex<double> Eigenmode::p_hat(double z) const { return at(p_, z); }
+std::complex<double> Eigenmode::u_hat(double z) const {
+  return at(u_, z);
+}
+std::complex<double> Eigenmode::w_hat(double z) const {
+  return at(w_, z);
+}
+std::complex<double> Eigenmode::p_hat(double z) const {
+  return at(p_, z);
+}
 
 double Eigenmode::height(double x, double a) const {
   return steady_.h0 + a * std::cos(k_ * x);
@@ -66,8 +72,8 @@ Eigenmode::Fields Eigenmode::seeded_state(double x, double z, double a) const {
   if (!f.granular) return f;
   const double rho_g_cos =
       steady_.material.bulk_density() * steady_.material.g * std::cos(steady_.zeta);
-  f.u += steady_.velocity(std::min(z, steady_.h0));           // (5.5)
-  f.p = std::max(0.0, f.p + rho_g_cos * (steady_.h0 - z));     // (5.4), continued to h(x)
+  f.u += steady_.velocity(std::min(z, steady_.h0));         // (5.5)
+  f.p = std::max(0.0, f.p + rho_g_cos * (steady_.h0 - z));  // (5.4), continued to h(x)
   return f;
 }
 

@@ -10,10 +10,9 @@
 // so that the total pressure vanishes at the perturbed surface to O(a).
 #pragma once
 
+#include <Eigen/Dense>
 #include <complex>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "linear2d_base_state.hpp"
 #include "linear2d_chebyshev.hpp"
@@ -30,8 +29,8 @@ class Eigenmode {
   Eigenmode(const SteadyState& s, const LinearBaseState& b, double k_hat, const ChebyshevGrid& grid,
             VerticalMap map, const Eigenpair& pair);
 
-  double k() const { return k_; }                         // [1/m]
-  std::complex<double> lambda() const { return lambda_; } // [1/s]
+  double k() const { return k_; }                          // [1/m]
+  std::complex<double> lambda() const { return lambda_; }  // [1/s]
   double growth_rate() const { return lambda_.real(); }
   double phase_speed() const { return -lambda_.imag() / k_; }
 
@@ -50,9 +49,9 @@ class Eigenmode {
     double u = 0.0, w = 0.0, p = 0.0;
     bool granular = false;  // z <= h(x)
   };
-  double height(double x, double a) const;                      // h0 + a cos(k x)
-  Fields perturbation(double x, double z, double a) const;      // O(a) parts only
-  Fields seeded_state(double x, double z, double a) const;      // base state + perturbation
+  double height(double x, double a) const;                  // h0 + a cos(k x)
+  Fields perturbation(double x, double z, double a) const;  // O(a) parts only
+  Fields seeded_state(double x, double z, double a) const;  // base state + perturbation
 
  private:
   std::complex<double> at(const Eigen::VectorXcd& f, double z) const;

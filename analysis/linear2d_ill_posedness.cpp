@@ -26,13 +26,13 @@ IllPosednessReport probe_ill_posedness(const SteadyState& s, const MuCurve& curv
   const double rate = s.u_mean / s.h0;  // (7.13a)
   r.growth_rate_N1 = r.growth_hat_N1 * rate;
   r.growth_rate_N2 = r.growth_hat_N2 * rate;
-  const double change = std::abs(r.growth_hat_N2 - r.growth_hat_N1) /
-                        std::max(std::abs(r.growth_hat_N2), 1e-12);
+  const double change =
+      std::abs(r.growth_hat_N2 - r.growth_hat_N1) / std::max(std::abs(r.growth_hat_N2), 1e-12);
   r.ill_posed_base_state = r.growth_hat_N2 > 0.0 && change > probe.tolerance;
   std::ostringstream msg;
-  msg << "C(I_zeta) = " << r.C << (r.C_positive ? " > 0" : " <= 0") << "; largest growth at k_hat = "
-      << r.k_hat << ": " << r.growth_rate_N1 << " 1/s (N = " << r.N1 << "), " << r.growth_rate_N2
-      << " 1/s (N = " << r.N2 << ")";
+  msg << "C(I_zeta) = " << r.C << (r.C_positive ? " > 0" : " <= 0")
+      << "; largest growth at k_hat = " << r.k_hat << ": " << r.growth_rate_N1
+      << " 1/s (N = " << r.N1 << "), " << r.growth_rate_N2 << " 1/s (N = " << r.N2 << ")";
   msg << (r.ill_posed_base_state
               ? ": growth rises without converging as N grows; the base state is ill posed"
               : ": converged; no sign of ill posedness");

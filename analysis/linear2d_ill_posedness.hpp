@@ -18,17 +18,17 @@
 namespace granbench::linear2d {
 
 struct IllPosednessProbe {
-  double k_hat = 30.0;  // short wave, k h0
-  int N = 32;           // and 2N
+  double k_hat = 30.0;      // short wave, k h0
+  int N = 32;               // and 2N
   double tolerance = 0.05;  // relative change N -> 2N that still counts as converged
 };
 
 struct IllPosednessReport {
-  double C = 0.0;               // (3.9) at I_zeta
-  bool C_positive = false;      // ill posed by (3.7)
+  double C = 0.0;           // (3.9) at I_zeta
+  bool C_positive = false;  // ill posed by (3.7)
   double k_hat = 0.0;
   int N1 = 0, N2 = 0;
-  double growth_hat_N1 = 0.0;   // largest Re(lambda_hat) at N1, N2 (scaled (7.13))
+  double growth_hat_N1 = 0.0;  // largest Re(lambda_hat) at N1, N2 (scaled (7.13))
   double growth_hat_N2 = 0.0;
   double growth_rate_N1 = 0.0;  // the same in 1/s
   double growth_rate_N2 = 0.0;

@@ -11,10 +11,14 @@
 namespace granbench::linear2d {
 
 namespace {
-int map_power(VerticalMap map) { return map == VerticalMap::SquareRoot ? 2 : 1; }
+int map_power(VerticalMap map) {
+  return map == VerticalMap::SquareRoot ? 2 : 1;
+}
 }  // namespace
 
-double map_height(VerticalMap map, double s) { return 1.0 - std::pow(s, map_power(map)); }
+double map_height(VerticalMap map, double s) {
+  return 1.0 - std::pow(s, map_power(map));
+}
 
 double map_coordinate(VerticalMap map, double z) {
   const double depth = std::max(0.0, 1.0 - z);
@@ -48,8 +52,8 @@ Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGr
   for (int j = 0; j < n; ++j) {
     const double s = grid.s()(j);
     const double z = map_height(map, s);
-    const double zs = -m * std::pow(s, m - 1);           // dz/ds
-    const double depth_pow = std::pow(s, m * b.beta);    // (1 - z)^beta
+    const double zs = -m * std::pow(s, m - 1);         // dz/ds
+    const double depth_pow = std::pow(s, m * b.beta);  // (1 - z)^beta
     const double eta_n = b.eta_n0 * depth_pow;
     const double eta_s = b.eta_s0 * depth_pow;
     const double a = -(b.eta_s0 / m) * std::pow(s, a_power);  // eta_s / z_s

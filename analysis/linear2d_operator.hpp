@@ -20,8 +20,9 @@
 //
 //   T - (eta_s/z_s) u_s - i k eta_s w - q (N - 2 i k eta_n u) = 0       [bed row: u = 0]
 //   w_s + i k z_s u = 0                                                 [bed row: w = 0]
-//   T_s - z_s (F^2 (lambda + i k U0) u + F^2 U0' w + i k N + 4 eta_n k^2 u) = 0   [surface: T = mu h]
-//   N_s - z_s (i k T - F^2 (lambda + i k U0) w) = 0                              [surface: N = h]
+//   T_s - z_s (F^2 (lambda + i k U0) u + F^2 U0' w + i k N + 4 eta_n k^2 u) = 0   [surface: T = mu
+//   h] N_s - z_s (i k T - F^2 (lambda + i k U0) w) = 0                              [surface: N =
+//   h]
 //
 // The plain map z = 1 - s is also provided, to show what the degenerate viscosity does to it.
 // Unknown vector: u(s_0..s_N), w(...), N(...), T(...), h, with s_0 = 1 the bed and s_N = 0 the

@@ -2,12 +2,11 @@
 // method is explained in linear2d_spectrum.hpp.
 #include "linear2d_spectrum.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-
-#include <Eigen/Eigenvalues>
 
 namespace granbench::linear2d {
 

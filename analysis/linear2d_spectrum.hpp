@@ -17,19 +17,18 @@
 // and each carries its relative residual.
 #pragma once
 
+#include <Eigen/Dense>
 #include <complex>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "linear2d_operator.hpp"
 
 namespace granbench::linear2d {
 
 struct SpectrumOptions {
-  double max_modulus = 1e8;      // |lambda| above this is treated as infinite
-  double theta_floor = 1e-11;    // |theta| below this times max |theta| is an infinite eigenvalue
-  double match_tolerance = 1e-6; // relative agreement required between the two views
+  double max_modulus = 1e8;       // |lambda| above this is treated as infinite
+  double theta_floor = 1e-11;     // |theta| below this times max |theta| is an infinite eigenvalue
+  double match_tolerance = 1e-6;  // relative agreement required between the two views
 };
 
 // Finite eigenvalues, sorted by decreasing real part. `shift` must not be an eigenvalue.

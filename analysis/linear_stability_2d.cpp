@@ -88,8 +88,9 @@ std::vector<BranchPoint> surface_branch(const LinearBaseState& b, const std::vec
   for (double k : k_hat) {
     const auto eig = spectrum(b, k, N);
     // First point by continuation from the long-wave limit; then from the previous point.
-    lambda = out.empty() ? nearest(eig, surface_mode_eigenvalue(b, k, N, VerticalMap::SquareRoot, path))
-                         : nearest(eig, lambda * (k / k_prev));
+    lambda = out.empty()
+                 ? nearest(eig, surface_mode_eigenvalue(b, k, N, VerticalMap::SquareRoot, path))
+                 : nearest(eig, lambda * (k / k_prev));
     BranchPoint p;
     p.k_hat = k;
     p.surface = lambda;

@@ -56,9 +56,9 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
 // growth rate among the other modes at each k_hat (NaN if none is finite).
 struct BranchPoint {
   double k_hat = 0.0;
-  std::complex<double> surface;   // lambda_hat of the surface mode
-  double other_max_growth = 0.0;  // max Re(lambda_hat) over the remaining modes
-  double other_phase_speed = 0.0; // -Im/k_hat of that mode
+  std::complex<double> surface;    // lambda_hat of the surface mode
+  double other_max_growth = 0.0;   // max Re(lambda_hat) over the remaining modes
+  double other_phase_speed = 0.0;  // -Im/k_hat of that mode
 };
 std::vector<BranchPoint> surface_branch(const LinearBaseState& b, const std::vector<double>& k_hat,
                                         int N, const ContinuationOptions& path = {});

@@ -112,7 +112,7 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
   opt.N_check = t.N + t.N / 2;
   std::vector<Linear2DResult> results;
   for (double L : Lx) results.push_back(linear_stability_2d(s, curve, L, opt));  // (1)
-  const auto probe = linear2d::probe_ill_posedness(s, curve);                  // (2)
+  const auto probe = linear2d::probe_ill_posedness(s, curve);                    // (2)
   const auto& base = results.front().base;
   const double F_c = linear2d::critical_froude_2d(base.mu, base.Gamma);
 
@@ -132,12 +132,12 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
       nlohmann::json m = mode_json(r.surface);
       m["Lx"] = r.Lx;
       m["k_hat"] = r.k_hat;
-      m["convergence"] = {{"N", r.N},
-                          {"N_check", r.N_check},
-                          {"growth_rate_check", r.surface.lambda_hat_check.real() * s.u_mean / s.h0},
-                          {"phase_speed_check",
-                           -r.surface.lambda_hat_check.imag() / r.k_hat * s.u_mean},
-                          {"relative_difference", number_or_null(r.surface.relative_difference)}};
+      m["convergence"] = {
+          {"N", r.N},
+          {"N_check", r.N_check},
+          {"growth_rate_check", r.surface.lambda_hat_check.real() * s.u_mean / s.h0},
+          {"phase_speed_check", -r.surface.lambda_hat_check.imag() / r.k_hat * s.u_mean},
+          {"relative_difference", number_or_null(r.surface.relative_difference)}};
       nlohmann::json branches = nlohmann::json::array();
       for (const auto& u : r.unstable) branches.push_back(mode_json(u));
       m["unstable_branches"] = branches;

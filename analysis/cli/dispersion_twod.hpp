@@ -12,7 +12,7 @@
 namespace granbench::cli {
 
 struct TwoDDispersionOptions {
-  int N = 32;        // Chebyshev intervals; the check uses 3N/2
+  int N = 32;  // Chebyshev intervals; the check uses 3N/2
   std::string curve_name;
   double angle_deg = 0.0;
 };

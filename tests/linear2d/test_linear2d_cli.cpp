@@ -46,7 +46,8 @@ TEST(Linear2DCli, TwoDTheoryJsonCarriesTheConvergenceCheck) {
 }
 
 TEST(Linear2DCli, IllPosedBaseStateIsReported) {
-  const auto r = run("dispersion --theory twod --curve jop --angle 28.5 --h0 0.004 --Lx 0.08 --json");
+  const auto r =
+      run("dispersion --theory twod --curve jop --angle 28.5 --h0 0.004 --Lx 0.08 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["ill_posedness"]["ill_posed_base_state"].get<bool>());

@@ -24,9 +24,8 @@ constexpr double k_hat_8cm = 2.0 * 3.14159265358979323846 * 4e-3 / 0.08;
 std::complex<double> nearest(const LinearBaseState& b, int N, VerticalMap map,
                              std::complex<double> ref) {
   const auto sp = spectrum(b, k_hat_8cm, N, map);
-  return *std::min_element(sp.begin(), sp.end(), [&](auto x, auto y) {
-    return std::abs(x - ref) < std::abs(y - ref);
-  });
+  return *std::min_element(sp.begin(), sp.end(),
+                           [&](auto x, auto y) { return std::abs(x - ref) < std::abs(y - ref); });
 }
 }  // namespace
 

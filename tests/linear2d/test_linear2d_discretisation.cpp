@@ -37,8 +37,8 @@ TEST(Linear2DChebyshev, InterpolatesPolynomialsExactly) {
 
 TEST(Linear2DMap, SquareRootMapInvertsAndLinearMapToo) {
   for (double z : {0.0, 0.25, 0.9, 1.0}) {
-    EXPECT_NEAR(map_height(VerticalMap::SquareRoot, map_coordinate(VerticalMap::SquareRoot, z)),
-                z, 1e-15);
+    EXPECT_NEAR(map_height(VerticalMap::SquareRoot, map_coordinate(VerticalMap::SquareRoot, z)), z,
+                1e-15);
     EXPECT_NEAR(map_height(VerticalMap::Linear, map_coordinate(VerticalMap::Linear, z)), z, 1e-15);
   }
 }

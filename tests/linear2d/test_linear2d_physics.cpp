@@ -75,7 +75,9 @@ TEST(Linear2DPhysics, LongWaveThresholdFromDepthScan) {
   // long-wave growth rate and compare F there with F_c = sqrt((8/25)(2 - 3 mu q)).
   for (double zeta : {24.0, 28.5}) {
     const double k = 1e-3;
-    auto growth = [&](double h0) { return surface_mode_eigenvalue(bagnold(zeta, h0), k, 16).real(); };
+    auto growth = [&](double h0) {
+      return surface_mode_eigenvalue(bagnold(zeta, h0), k, 16).real();
+    };
     const double h_c = bisect(growth, 1e-4, 2e-2);
     const LinearBaseState b = bagnold(zeta, h_c);
     EXPECT_NEAR(b.F, critical_froude_2d(b.mu, b.Gamma), 1e-4) << zeta;
@@ -93,14 +95,15 @@ TEST(Linear2DPhysics, NewtonianFilmReproducesBenjaminYihThreshold) {
     ContinuationOptions path;
     path.N = 12;  // the Nusselt profile is a quadratic: few points resolve it
     auto growth = [&](double F) {
-      return surface_mode_eigenvalue(newtonian_film_base_state(F, zeta), k, 12,
-                                     VerticalMap::Linear, path).real();
+      return surface_mode_eigenvalue(newtonian_film_base_state(F, zeta), k, 12, VerticalMap::Linear,
+                                     path)
+          .real();
     };
     const double F_c = bisect(growth, 0.2, 1.0);
     const double Re_c = newtonian_film_reynolds(newtonian_film_base_state(F_c, zeta));
     EXPECT_NEAR(Re_c / (5.0 / 6.0 / std::tan(zeta)), 1.0, 1e-3) << zeta_deg;
-    const auto l = surface_mode_eigenvalue(newtonian_film_base_state(F_c, zeta), k, 20,
-                                           VerticalMap::Linear);
+    const auto l =
+        surface_mode_eigenvalue(newtonian_film_base_state(F_c, zeta), k, 20, VerticalMap::Linear);
     EXPECT_NEAR(-l.imag() / k, 3.0, 1e-3);
   }
 }

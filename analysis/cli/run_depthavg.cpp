@@ -71,8 +71,13 @@ double parse_frame_speed(const std::string& text, double linear_speed) {
   return v;
 }
 
+// A growth (or decay) rate is reported only when the fitted window spans at least this many
+// e-folds; a saturated wave (e.g. (7.2) at Lx = 8 cm, which saturates within 0.3 s) has none.
+constexpr double min_efolds = 0.1;
+
 struct Measured {
   std::optional<SpectralGrowth> growth;
+  std::string growth_note;
   std::optional<Estimate712> e712;
   std::optional<WaveSpeed> wave;
 };
@@ -82,8 +87,15 @@ Measured measure(const SurfaceSeries& s, int mode) {
   if (s.nt() < 8) return m;
   try {
     m.growth = spectral_growth(s, mode);
-    m.e712 = growth_estimate_712(s, m.growth->amplitude_fit.t_first, m.growth->amplitude_fit.t_last);
-  } catch (const std::invalid_argument&) {
+    const auto& f = m.growth->amplitude_fit;
+    if (std::fabs(f.slope) * (f.t_last - f.t_first) < min_efolds) {
+      m.growth_note = "no exponential phase: the best linear window of ln|h_k| spans fewer than 0.1 e-folds";
+      m.growth.reset();
+    } else {
+      m.e712 = growth_estimate_712(s, f.t_first, f.t_last);
+    }
+  } catch (const std::invalid_argument& e) {
+    m.growth_note = e.what();
   }
   try {
     m.wave = wave_speed(s, 0.5 * s.t.back(), s.t.back());
@@ -176,6 +188,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
       {"growth_fit_r2", m.growth ? number_or_null(m.growth->amplitude_fit.r2) : nullptr},
       {"growth_fit_rms", m.growth ? number_or_null(m.growth->amplitude_fit.rms_residual) : nullptr},
       {"growth_window_found", m.growth ? nlohmann::json(m.growth->window_found) : nullptr},
+      {"growth_note", m.growth_note},
       {"wave_speed", m.wave ? number_or_null(m.wave->speed) : nullptr},
       {"wave_speed_spread", m.wave ? number_or_null(m.wave->spread) : nullptr},
       {"dt_out", out.dt_out},
@@ -234,6 +247,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
               << exact.phase_speed << "\n"
               << "  wave speed       " << show(j["wave_speed"]) << " m/s (cross-correlation, "
               << "second half of the run)\n";
+    if (!m.growth_note.empty()) std::cout << "  growth rate not measured: " << m.growth_note << "\n";
     if (m.growth)
       std::cout << "  growth window    " << m.growth->amplitude_fit.t_first << " .. "
                 << m.growth->amplitude_fit.t_last << " s, R^2 = " << m.growth->amplitude_fit.r2

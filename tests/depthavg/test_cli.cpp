@@ -3,12 +3,14 @@
 // and sweep produce the documented JSON keys.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -17,9 +19,16 @@ struct Result {
   std::string out;
 };
 
+// One stderr file per test process (ctest may run the tests of this file in parallel).
+std::string stderr_path() {
+  return (std::filesystem::temp_directory_path() /
+          ("granbench_cli_err_" + std::to_string(getpid()) + ".txt"))
+      .string();
+}
+
 Result granbench(const std::string& args) {
   const std::string cmd =
-      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>/tmp/granbench_cli_err.txt";
+      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + stderr_path();
   FILE* p = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf{};
@@ -30,7 +39,7 @@ Result granbench(const std::string& args) {
 
 std::string last_stderr() {
   std::string s;
-  if (FILE* f = std::fopen("/tmp/granbench_cli_err.txt", "r")) {
+  if (FILE* f = std::fopen(stderr_path().c_str(), "r")) {
     std::array<char, 4096> buf{};
     while (std::fgets(buf.data(), buf.size(), f)) s += buf.data();
     std::fclose(f);
@@ -39,7 +48,9 @@ std::string last_stderr() {
 }
 
 TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
-  const std::string out = (std::filesystem::temp_directory_path() / "gb_cli_bad.h5").string();
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("gb_cli_bad_" + std::to_string(getpid()) + ".h5"))
+                              .string();
   std::filesystem::remove(out);
   const std::pair<std::string, std::string> cases[] = {
       {"run --model depthavg --nx 2", "--nx"},
@@ -67,7 +78,9 @@ TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
 }
 
 TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
-  const std::string out = (std::filesystem::temp_directory_path() / "gb_cli_run.h5").string();
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("gb_cli_run_" + std::to_string(getpid()) + ".h5"))
+                              .string();
   std::filesystem::remove(out);
   const auto r = granbench(
       "run --model depthavg --init eigenmode --a0 4e-6 --Lx 0.08 --nx 64 --t-end 0.3 "

@@ -56,6 +56,8 @@ nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
                    {"fit_window", {m.spectral.amplitude_fit.t_first, m.spectral.amplitude_fit.t_last}},
                    {"fit_r2", m.spectral.amplitude_fit.r2},
                    {"fit_window_found", m.spectral.window_found},
+                   {"growth_rate_whole_run", m.whole_run.slope},
+                   {"whole_run_r2", m.whole_run.r2},
                    {"wave_speed", opt(m.wave_speed)},
                    {"amplitude", opt(m.amplitude)},
                    {"final_amplitude", m.final_amplitude},
@@ -104,7 +106,8 @@ void print_table(const Comparison& c) {
     std::cout << std::setprecision(3) << "  " << name << " growth fitted over t = [" << fit.t_first
               << ", " << fit.t_last << "] s, R^2 = " << fit.r2
               << (m->spectral.window_found ? "" : "  (no clean exponential window: treat with care)")
-              << "\n";
+              << "; whole-run fit " << m->whole_run.slope << " 1/s (R^2 = " << m->whole_run.r2
+              << ")\n";
     if (m->saturated)
       std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << *m->wave_speed
                 << " m/s, amplitude " << *m->amplitude * 1e3 << " mm\n";

@@ -21,6 +21,7 @@
 #include "hdf5_file.hpp"
 #include "depthavg/linear_run.hpp"
 #include "run_model.hpp"
+#include "sweep_models.hpp"
 
 namespace granbench::cli {
 
@@ -36,6 +37,7 @@ struct SweepOptions {
   std::size_t nx = 192;
   double tolerance = 1e-6;
   double t_end = 0.0;
+  std::string resolution = "coarse";  // 2D grid of --model twod|both
 };
 
 std::vector<double> parse_range(const std::string& text) {
@@ -108,9 +110,22 @@ void write_sweep(const std::string& path, const SteadyState& s, double chi,
   out.close();
 }
 
+// --model twod|both: the resumable two-model engine (sweep_models.hpp).
+void run_two_model_sweep(const SweepOptions& o) {
+  ModelSweepOptions m;
+  m.depthavg = o.model == "both";
+  m.twod = true;
+  m.Lx = parse_range(o.Lx);
+  m.jobs = o.jobs;
+  if (o.t_end > 0.0) m.t_end = o.t_end;
+  m.nx = o.resolution == "fine" ? 320 : o.resolution == "default" ? 160 : 80;
+  m.nz = m.nx / 5;
+  m.chi = parse_chi(o.depthavg.chi);
+  run_model_sweep(o.flow, o.output, m);
+}
+
 void run_sweep(const SweepOptions& o) {
-  if (parse_model(o.model) != Model::DepthAvg)
-    throw UsageError("--model: sweep runs {depthavg} only; use `granbench run --model twod`");
+  if (o.model != "depthavg") return run_two_model_sweep(o);
   const double chi = parse_chi(o.depthavg.chi);
   const auto Lxs = parse_range(o.Lx);
   const MuCurve curve = o.flow.make_curve();
@@ -233,8 +248,8 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "sweep", "measured linear growth rate and phase speed over domain lengths vs (7.11)");
   add_flow_options(*sub, o->flow);
-  sub->add_option("--model", o->model, "model {depthavg}")
-      ->check(one_of(model_names()))
+  sub->add_option("--model", o->model, "model {depthavg,twod,both}")
+      ->check(one_of({"depthavg", "twod", "both"}))
       ->capture_default_str();
   sub->add_option("--Lx", o->Lx, "domain lengths A:B:N [m] (N evenly spaced from A to B)")
       ->capture_default_str();
@@ -251,6 +266,10 @@ void add_sweep_command(CLI::App& app) {
   sub->add_option("--t-end", o->t_end,
                   "run length per point [s], > 0; default: max(4 periods, 0.5/|growth|), <= 5 s")
       ->check(positive());
+  sub->add_option("--resolution", o->resolution,
+                  "2D grid of --model twod|both {coarse: 80x16, default: 160x32, fine: 320x64}")
+      ->check(one_of({"coarse", "default", "fine"}))
+      ->capture_default_str();
   add_depthavg_options(*sub, o->depthavg);
   add_output_options(*sub, o->output);
   sub->callback([o] { run_sweep(*o); });

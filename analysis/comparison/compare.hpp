@@ -23,6 +23,9 @@ struct TheoryValue {
 
 struct Measurement {
   SpectralGrowth spectral;
+  // ln|h_k| fitted over the whole run after the first tenth: robust where the automatic window is
+  // not (a beating of two waves at the seeded wavenumber, as the 2D runs show).
+  LinearFit whole_run;
   std::optional<double> growth_712;   // (7.12) averaged over the spectral fit's window
   bool saturated = false;             // amplitude steady over the last fifth of the run
   std::optional<double> wave_speed;   // [m/s], when saturated

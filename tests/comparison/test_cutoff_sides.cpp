@@ -29,17 +29,21 @@ TEST(CutoffSides, DepthAveragedModelGrowsAboveAndDecaysBelowItsCutoff) {
   }
 }
 
-TEST(CutoffSides, TwoDModelDecaysBelowTheCutoff) {
-  // Lx = 1 cm: the 2D theory gives -1.46 1/s. 40 x 16 cells: dx = 0.25 mm, dz = 0.5 mm.
+TEST(CutoffSides, TwoDModelDecaysBelowTheCutoffOnTwoGrids) {
+  // Lx = 1 cm: the 2D theory gives -1.46 1/s. The 2D runs show a beating of two waves at the
+  // seeded wavenumber (docs/comparison.md), so the decay is judged by the fit of ln|h_k| over the
+  // whole run, not by the automatic window. Measured: -7 1/s (40 x 16), -5 1/s (80 x 16).
   const ChuteCase c = chute(0.01, 0.4);
-  TwodSettings s;
-  s.nx = 40;
-  s.nz = 16;
-  const ModelRun r = run_twod(c, s);
-  ASSERT_EQ(r.outcome, RunOutcome::Completed) << r.message;
-  const Measurement m = measure(r.series);
   const Theories t = exact_theories(c);
   ASSERT_LT(t.exact_2d.growth_rate, 0.0);
-  EXPECT_LT(m.spectral.growth_rate, 0.0);
-  EXPECT_LT(r.mass_error, 1e-12);
+  for (int nx : {40, 80}) {
+    TwodSettings s;
+    s.nx = nx;
+    s.nz = 16;
+    const ModelRun r = run_twod(c, s);
+    ASSERT_EQ(r.outcome, RunOutcome::Completed) << r.message;
+    const Measurement m = measure(r.series);
+    EXPECT_LT(m.whole_run.slope, 0.0) << nx << " x 16";
+    EXPECT_LT(r.mass_error, 1e-12);
+  }
 }

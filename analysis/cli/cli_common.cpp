@@ -103,7 +103,8 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
   app.add_option("--out", o.out, "write data to this HDF5 file");
   if (with_plot) app.add_option("--plot", o.plot, "draw the figure into this PNG file");
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
-  app.set_config("--config", "", "read options from a TOML file (command line overrides)");
+  // Expanded into options before parsing (config_file.hpp); declared here for --help.
+  app.add_option("--config")->description("read options from a TOML file (the command line overrides it)");
 }
 
 nlohmann::json number_or_null(double v) {

@@ -28,7 +28,7 @@ struct CompareOptions {
   double a0 = 2e-5;
   bool paper = false;
   std::string init = "eigenmode";
-  double t_end = 4.0;
+  double t_end = 2.0;
   double dt_out = 0.0;
   std::string resolution = "default";
   int nx = 0, nz = 0;          // 2D grid; 0: from --resolution

@@ -7,16 +7,17 @@
 // Exit codes: 0 success, 2 bad input (one line naming the option and its valid range),
 // other non-zero codes for failures a command reports (e.g. a diverged solver).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
 
 int main(int argc, char** argv) {
   using namespace granbench::cli;
   CLI::App app{"granbench: depth-averaged and 2D mu(I) chute flows against exact theory"};
   app.require_subcommand(1);
-  app.set_config("--config", "", "read options from a TOML file (command line overrides)");
   add_wellposed_command(app);
   add_steady_command(app);
   add_dispersion_command(app);
@@ -24,7 +25,11 @@ int main(int argc, char** argv) {
   add_sweep_command(app);
   add_compare_command(app);
   try {
-    app.parse(argc, argv);
+    // Options from --config files become ordinary options first (config_file.hpp).
+    std::vector<std::string> args(argv + 1, argv + argc);
+    args = expand_config_files(args);
+    std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

@@ -1,6 +1,7 @@
 // The two-model dispersion sweep; see sweep_models.hpp.
 #include "sweep_models.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -88,8 +89,10 @@ void run_model_sweep(const FlowOptions& flow, const OutputOptions& output,
                 << p.phase_speed_exact << (p.completed ? "" : "  (unfinished)") << "\n";
   }
   const std::size_t expected = o.Lx.size() * ((o.depthavg ? 1 : 0) + (o.twod ? 1 : 0));
-  if (points.size() < expected)
-    throw CommandFailed("interrupted with " + std::to_string(points.size()) + " of " +
+  const auto finished = static_cast<std::size_t>(
+      std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return p.completed; }));
+  if (finished < expected)
+    throw CommandFailed("interrupted with " + std::to_string(finished) + " of " +
                             std::to_string(expected) + " points kept in " + spec.out +
                             "; run the same command again to resume",
                         130);

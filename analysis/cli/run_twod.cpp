@@ -23,8 +23,10 @@
 #include "checkpoint.hpp"
 #include "commands.hpp"
 #include "diagnostics.hpp"
+#include "eigenmode_seed.hpp"
 #include "hdf5_file.hpp"
 #include "initial_state.hpp"
+#include "linear2d_eigenmode.hpp"
 #include "output.hpp"
 #include "solver.hpp"
 #include "spectral_growth.hpp"
@@ -88,7 +90,6 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
 void run_twod(const RunOptions& o, const TwodOptions& mo) {
   using namespace granbench::twod;
   // --- parameters (validated before anything is written) ---
-  if (o.init != "sine") throw UsageError("--init: 'eigenmode' is not available for --model twod; valid {sine}");
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
   const MuCurve curve = o.flow.make_curve();
   const double zeta = degrees_to_radians(o.flow.angle_deg);
@@ -143,7 +144,12 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
                               : std::string("twod.checkpoint.h5");
 
   // --- initial state ---
-  auto ic = perturbed_bagnold(base, o.a0, wavelength);
+  // sine: (7.2); eigenmode: the least-stable surface mode of the exact 2D linear theory at this
+  // wavelength, amplitude a0 (analysis/comparison/eigenmode_seed.hpp).
+  const InitialCondition ic =
+      o.init == "eigenmode"
+          ? eigenmode_initial_condition(linear2d::surface_eigenmode(base, curve, wavelength), o.a0)
+          : perturbed_bagnold(base, o.a0, wavelength);
   Solver solver(grid, params, restart ? restart->state : make_initial_state(grid, ic, params));
   SurfaceSeries series = SurfaceSeries::uniform_grid(o.Lx, o.nx, o.flow.h0);
   if (restart) {

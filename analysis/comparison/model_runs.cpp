@@ -17,7 +17,7 @@
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
 #include "dispersion.hpp"
-#include "linear2d_chebyshev.hpp"
+#include "eigenmode_seed.hpp"
 #include "linear2d_eigenmode.hpp"
 #include "linear_stability_2d.hpp"
 #include "twod/diagnostics.hpp"
@@ -92,19 +92,9 @@ twod::InitialCondition eigenmode_condition(const SteadyState& base, const MuCurv
   Linear2DOptions opt;
   opt.N = N;
   opt.N_check = 0;
-  const Linear2DResult lin = linear_stability_2d(base, curve, c.Lx, opt);
-  growth = lin.surface.growth_rate;
-  const auto mode = std::make_shared<linear2d::Eigenmode>(
-      base, lin.base, lin.k_hat, linear2d::ChebyshevGrid(lin.N), opt.map, lin.surface_pair);
-  const double a = c.a0;
-  twod::InitialCondition ic;
-  ic.height = [mode, a](double x) { return mode->height(x, a); };
-  ic.velocity = [mode, a, h0 = base.h0](double x, double z) {
-    // Above the perturbed surface the light fluid starts with the surface speed (as (7.2) does).
-    const double zc = std::min(z, mode->height(x, a));
-    return mode->seeded_state(x, std::min(zc, h0), a).u;
-  };
-  return ic;
+  const linear2d::Eigenmode mode = linear2d::surface_eigenmode(base, curve, c.Lx, opt);
+  growth = mode.growth_rate();
+  return eigenmode_initial_condition(mode, c.a0);
 }
 
 }  // namespace

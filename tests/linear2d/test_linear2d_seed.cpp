@@ -1,5 +1,5 @@
 // Seeding the 2D solver with the exact eigenmode: the twod initial state built from
-// eigenmode_initial_condition (analysis/cli/eigenmode_seed.hpp) has the eigenmode's surface, and
+// eigenmode_initial_condition (analysis/comparison/eigenmode_seed.hpp) has the eigenmode's surface, and
 // the vertical velocity the solver derives from discrete continuity reproduces the eigenmode's
 // w(z) to the grid's second-order accuracy (kinematic consistency of the seed).
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ TEST(Linear2DSeed, TwoDInitialStateCarriesTheEigenmode) {
   const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
   const double Lx = 0.08, a = 1e-5;
   const linear2d::Eigenmode mode = linear2d::surface_eigenmode(s, curve, Lx);
-  const twod::InitialCondition ic = cli::eigenmode_initial_condition(mode, a);
+  const twod::InitialCondition ic = eigenmode_initial_condition(mode, a);
   EXPECT_NEAR(ic.height(0.0), s.h0 + a, 1e-15);
   EXPECT_NEAR(ic.height(0.25 * Lx), s.h0, 1e-12);
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-namespace granbench::cli {
+namespace granbench {
 
 twod::InitialCondition eigenmode_initial_condition(const linear2d::Eigenmode& mode, double a) {
   twod::InitialCondition ic;
@@ -15,4 +15,4 @@ twod::InitialCondition eigenmode_initial_condition(const linear2d::Eigenmode& mo
   return ic;
 }
 
-}  // namespace granbench::cli
+}  // namespace granbench

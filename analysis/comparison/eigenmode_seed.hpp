@@ -5,15 +5,15 @@
 //
 //   h(x) = h0 + a cos(k x),   u(x, z) = U0(z) + Re(a u_hat(z) e^{ikx})   for z <= h(x),
 //
-// with the value at the surface continued above it. Lives in the CLI because it joins the twod
-// and analysis libraries, which do not depend on each other.
+// with the value at the surface continued above it. Lives in the comparison layer because it
+// joins the twod and analysis libraries, which do not depend on each other.
 #pragma once
 
 #include "initial_state.hpp"
 #include "linear2d_eigenmode.hpp"
 
-namespace granbench::cli {
+namespace granbench {
 
 twod::InitialCondition eigenmode_initial_condition(const linear2d::Eigenmode& mode, double a);
 
-}  // namespace granbench::cli
+}  // namespace granbench

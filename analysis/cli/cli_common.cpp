@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <iostream>
 #include <sstream>
 
@@ -18,23 +19,7 @@ std::string fmt(double v) {
 }
 }  // namespace
 
-CLI::Validator positive() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double v = 0.0;
-        try {
-          std::size_t used = 0;
-          v = std::stod(text, &used);
-          if (used != text.size()) throw std::invalid_argument(text);
-        } catch (const std::exception&) {
-          return "'" + text + "' is not a number; valid range (0, inf)";
-        }
-        if (!(v > 0.0) || !std::isfinite(v))
-          return "value " + text + " out of range; valid range (0, inf)";
-        return {};
-      },
-      "in (0, inf)", "positive");
-}
+CLI::Validator positive() { return open_range(0.0, std::numeric_limits<double>::infinity()); }
 
 CLI::Validator open_range(double lo, double hi) {
   const std::string range = "(" + fmt(lo) + ", " + fmt(hi) + ")";
@@ -69,6 +54,14 @@ CLI::Validator one_of(const std::vector<std::string>& values) {
 CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
 
 MuCurve FlowOptions::make_curve() const { return MuCurve(curve_kind(), material, h0); }
+
+SteadyState FlowOptions::steady() const {
+  try {
+    return steady_state(make_curve(), degrees_to_radians(angle_deg), h0);
+  } catch (const CurveRangeError& e) {
+    throw UsageError(std::string("--angle: ") + e.what());
+  }
+}
 
 void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
   std::string names;

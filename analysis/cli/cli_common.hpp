@@ -10,6 +10,7 @@
 
 #include "material.hpp"
 #include "mu_curves.hpp"
+#include "steady_state.hpp"
 
 namespace granbench::cli {
 
@@ -32,6 +33,8 @@ struct FlowOptions {
 
   CurveKind curve_kind() const;
   MuCurve make_curve() const;
+  // The steady state of these options; a slope with no steady flow is a UsageError on --angle.
+  SteadyState steady() const;
 };
 // add_slope=false for subcommands with no slope (wellposed).
 void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope = true);

@@ -77,12 +77,7 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
 }
 
 void run_dispersion(const DispersionOptions& o) {
-  SteadyState s;
-  try {
-    s = steady_state(o.flow.make_curve(), degrees_to_radians(o.flow.angle_deg), o.flow.h0);
-  } catch (const CurveRangeError& e) {
-    throw UsageError(std::string("--angle: ") + e.what());
-  }
+  const SteadyState s = o.flow.steady();
   const Theory theory = parse_theory(o.theory);
   if (theory == Theory::TwoD)
     return run_twod_dispersion(s, o.flow.make_curve(), o.Lx,

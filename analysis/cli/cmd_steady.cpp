@@ -20,16 +20,8 @@ struct SteadyOptions {
   OutputOptions output;
 };
 
-SteadyState checked_steady_state(const FlowOptions& f) {
-  try {
-    return steady_state(f.make_curve(), degrees_to_radians(f.angle_deg), f.h0);
-  } catch (const CurveRangeError& e) {
-    throw UsageError(std::string("--angle: ") + e.what());
-  }
-}
-
 void run_steady(const SteadyOptions& o) {
-  const SteadyState s = checked_steady_state(o.flow);
+  const SteadyState s = o.flow.steady();
   if (!o.output.out.empty()) {
     constexpr int kN = 201;
     std::vector<double> z(kN), u(kN), p(kN);

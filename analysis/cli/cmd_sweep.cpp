@@ -129,12 +129,7 @@ void run_sweep(const SweepOptions& o) {
   const double chi = parse_chi(o.depthavg.chi);
   const auto Lxs = parse_range(o.Lx);
   const MuCurve curve = o.flow.make_curve();
-  SteadyState base;
-  try {
-    base = steady_state(curve, degrees_to_radians(o.flow.angle_deg), o.flow.h0);
-  } catch (const CurveRangeError& e) {
-    throw UsageError(std::string("--angle: ") + e.what());
-  }
+  const SteadyState base = o.flow.steady();
   depthavg::LinearRunParams lp;
   lp.nx = o.nx;
   lp.tolerance = o.tolerance;

@@ -109,12 +109,7 @@ Measured measure(const SurfaceSeries& s, int mode) {
 void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   const double chi = parse_chi(mo.chi);
   const MuCurve curve = o.flow.make_curve();
-  SteadyState base;
-  try {
-    base = steady_state(curve, degrees_to_radians(o.flow.angle_deg), o.flow.h0);
-  } catch (const CurveRangeError& e) {
-    throw UsageError(std::string("--angle: ") + e.what());
-  }
+  const SteadyState base = o.flow.steady();
   const double wavelength = o.Lx / o.mode;
   const DispersionMode exact = dispersion_mode(base, chi, wavelength);  // (7.11) with chi
 

@@ -5,11 +5,17 @@
 # wall and CPU seconds of each and the speed-up.
 #
 #   bench/gerris_side_by_side.sh [build-dir] [t_end seconds]
-# Needs gerris2D (Debian package gerris) and /work/shared/gerris/rollwave.gfs (or GERRIS_CASE).
+# Installs gerris2D (Debian package gerris) when missing; reads the case from shared/ beside the
+# repository (or GERRIS_CASE).
 set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build}
 t_end=${2:-0.1}
-case_file=${GERRIS_CASE:-/work/shared/gerris/rollwave.gfs}
+case_file=${GERRIS_CASE:-$repo/../shared/gerris/rollwave.gfs}
+if ! command -v gerris2D >/dev/null; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq gerris >&2
+fi
 here=$(mktemp -d)
 trap 'rm -rf "$here"' EXIT
 T0=0.02019275109  # sqrt(h0/g) in seconds: Gerris' time unit

@@ -10,6 +10,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "dispersion.hpp"
+#include "dispersion_curve.hpp"
 #include "dispersion_twod.hpp"
 #include "hdf5_file.hpp"
 #include "steady_state.hpp"
@@ -37,18 +38,7 @@ Theory parse_theory(const std::string& t) {
 void write_dispersion_data(const std::string& path, const SteadyState& s, double chi,
                            const std::vector<DispersionMode>& modes) {
   // The curve over k_hat (log grid) and the chosen points, dimensional and non-dimensional.
-  std::vector<double> k_hat, lam_re, lam_im, growth, speed, Lx;
   const DispersionParams p = DispersionParams::from(s, chi);
-  for (int i = 0; i < 400; ++i) {
-    const double k = std::pow(10.0, -3.0 + 4.0 * i / 399.0);
-    const auto m = dispersion_mode(s, chi, Lx_from_k_hat(s, k));
-    k_hat.push_back(k);
-    lam_re.push_back(m.lambda_hat.real());
-    lam_im.push_back(m.lambda_hat.imag());
-    growth.push_back(m.growth_rate);
-    speed.push_back(m.phase_speed);
-    Lx.push_back(m.Lx);
-  }
   std::vector<double> pk, pg, pc, pL;
   for (const auto& m : modes) {
     pk.push_back(m.k_hat);
@@ -57,12 +47,7 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
     pL.push_back(m.Lx);
   }
   H5Writer out(path);
-  out.write("curve/k_hat", k_hat);
-  out.write("curve/lambda_hat_re", lam_re);
-  out.write("curve/lambda_hat_im", lam_im);
-  out.write("curve/growth_rate", growth);
-  out.write("curve/phase_speed", speed);
-  out.write("curve/Lx", Lx);
+  write_dispersion_curve(out, "curve", s, chi, 1e-3, 10.0, 400);
   out.write("points/k_hat", pk);
   out.write("points/growth_rate", pg);
   out.write("points/phase_speed", pc);

@@ -18,6 +18,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "dispersion_curve.hpp"
 #include "hdf5_file.hpp"
 #include "depthavg/linear_run.hpp"
 #include "run_model.hpp"
@@ -66,7 +67,7 @@ std::vector<double> parse_range(const std::string& text) {
 void write_sweep(const std::string& path, const SteadyState& s, double chi,
                  const std::vector<depthavg::LinearRunResult>& pts) {
   H5Writer out(path);
-  std::vector<double> Lx, k_hat, g, ge, c, ce, lr, li;
+  std::vector<double> Lx, k_hat, g, ge, c, ce;
   for (const auto& p : pts) {
     Lx.push_back(p.Lx);
     k_hat.push_back(p.exact.k_hat);
@@ -82,23 +83,9 @@ void write_sweep(const std::string& path, const SteadyState& s, double chi,
   out.write("points/phase_speed", c);
   out.write("points/phase_speed_exact", ce);
   // The exact curve (7.11) over a log range of k_hat around the points, for the figure.
-  std::vector<double> ck, cL, cg, cc, chr;
   const double k_lo = *std::min_element(k_hat.begin(), k_hat.end()) / 3.0;
   const double k_hi = *std::max_element(k_hat.begin(), k_hat.end()) * 3.0;
-  for (int i = 0; i < 300; ++i) {
-    const double k = k_lo * std::pow(k_hi / k_lo, i / 299.0);
-    const auto m = dispersion_mode(s, chi, Lx_from_k_hat(s, k));
-    ck.push_back(k);
-    cL.push_back(m.Lx);
-    cg.push_back(m.growth_rate);
-    cc.push_back(m.phase_speed);
-    chr.push_back(m.lambda_hat.real());
-  }
-  out.write("curve/k_hat", ck);
-  out.write("curve/Lx", cL);
-  out.write("curve/growth_rate", cg);
-  out.write("curve/phase_speed", cc);
-  out.write("curve/lambda_hat_re", chr);
+  write_dispersion_curve(out, "curve", s, chi, k_lo, k_hi, 300);
   out.attribute("/", "chi", chi);
   out.attribute("/", "h0", s.h0);
   out.attribute("/", "u_mean", s.u_mean);

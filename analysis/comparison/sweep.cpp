@@ -5,8 +5,10 @@
 #include <cmath>
 #include <filesystem>
 #include <mutex>
+#include <sstream>
 #include <thread>
 
+#include "dispersion_curve.hpp"
 #include "hdf5_file.hpp"
 
 namespace granbench {
@@ -14,15 +16,25 @@ namespace granbench {
 std::vector<double> parse_range(const std::string& text) {
   const auto a = text.find(':'), b = text.rfind(':');
   if (a == std::string::npos || a == b) throw std::invalid_argument("expected A:B:N");
-  std::size_t used = 0;
-  const double lo = std::stod(text.substr(0, a));
-  const double hi = std::stod(text.substr(a + 1, b - a - 1));
-  const std::string ns = text.substr(b + 1);
-  const long n = std::stol(ns, &used);
-  if (used != ns.size() || n < 1 || !(lo > 0.0) || !(hi >= lo))
-    throw std::invalid_argument("expected 0 < A <= B and N >= 1");
+  // A number filling its whole field, or std::invalid_argument.
+  const auto number = [](const std::string& s) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(s, &used);
+    } catch (const std::logic_error&) {
+      used = 0;
+    }
+    if (used == 0 || used != s.size()) throw std::invalid_argument("'" + s + "' is not a number");
+    return v;
+  };
+  const double lo = number(text.substr(0, a)), hi = number(text.substr(a + 1, b - a - 1));
+  const double n = number(text.substr(b + 1));
+  if (!(lo > 0.0) || !(hi >= lo) || !std::isfinite(hi) || !(n >= 1 && n <= 10000) ||
+      n != std::floor(n))
+    throw std::invalid_argument("expected 0 < A <= B and integer 1 <= N <= 10000");
   std::vector<double> v;
-  for (long i = 0; i < n; ++i) v.push_back(n == 1 ? lo : lo + (hi - lo) * i / (n - 1));
+  for (int i = 0; i < n; ++i) v.push_back(n == 1 ? lo : lo + (hi - lo) * i / (n - 1));
   return v;
 }
 
@@ -37,21 +49,35 @@ bool same_point(const SweepPoint& p, const Task& t) {
   return p.model == t.model && std::fabs(p.Lx - t.Lx) <= 1e-12 * t.Lx;
 }
 
-SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& ctl) {
-  ChuteCase c = spec.chute;
-  c.Lx = task.Lx;
-  SweepPoint p;
-  p.model = task.model;
-  p.Lx = task.Lx;
-  p.theory = exact_theories(c);
-  p.k_hat = p.theory.k_hat;
-  const ModelRun r = task.model == "twod" ? run_twod(c, spec.twod_settings, ctl)
-                                          : run_depthavg(c, spec.depthavg_settings, ctl);
+// A depth-averaged point from the clean linear run, against (7.11) with the run's chi.
+void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
+  const auto r = depthavg::linear_run(c.steady(), c.make_curve(), spec.depthavg_settings.chi, c.Lx,
+                                      *spec.depthavg_linear);
+  p.growth_rate = r.measured.growth_rate;
+  p.phase_speed = r.measured.phase_speed;
+  p.growth_rate_712 = NAN;
+  p.growth_rate_exact = r.exact.growth_rate;
+  p.phase_speed_exact = r.exact.phase_speed;
+  p.window_start = r.measured.amplitude_fit.t_first;
+  p.window_end = r.measured.amplitude_fit.t_last;
+  p.fit_r2 = r.measured.amplitude_fit.r2;
+  p.steps = static_cast<double>(r.stats.steps);
+  p.mass_error = r.mass_error;
+  p.wall_seconds = r.wall_seconds;
+  p.completed = r.ok;
+  p.message = r.message;
+}
+
+// A point from a seeded run of either model, measured like compare's (compare.hpp).
+void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
+                    const RunControl& ctl) {
+  const ModelRun r = p.model == "twod" ? run_twod(c, spec.twod_settings, ctl)
+                                       : run_depthavg(c, spec.depthavg_settings, ctl);
   const Measurement m = measure(r.series);
   p.growth_rate = m.spectral.growth_rate;
   p.phase_speed = m.spectral.phase_speed;
   p.growth_rate_712 = m.growth_712.value_or(NAN);
-  if (task.model == "twod") {
+  if (p.model == "twod") {
     p.growth_rate_exact = p.theory.exact_2d.growth_rate;
     p.phase_speed_exact = p.theory.exact_2d.phase_speed;
   } else {
@@ -60,17 +86,154 @@ SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& 
     p.growth_rate_exact = t.growth_rate;
     p.phase_speed_exact = t.phase_speed;
   }
+  p.window_start = m.spectral.amplitude_fit.t_first;
+  p.window_end = m.spectral.amplitude_fit.t_last;
+  p.fit_r2 = m.spectral.amplitude_fit.r2;
+  p.steps = static_cast<double>(r.steps);
+  p.mass_error = r.mass_error;
   p.wall_seconds = r.wall_seconds;
   p.completed = r.outcome == RunOutcome::Completed;
   p.message = r.message;
+}
+
+SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& ctl) {
+  ChuteCase c = spec.chute;
+  c.Lx = task.Lx;
+  SweepPoint p;
+  p.model = task.model;
+  p.Lx = task.Lx;
+  try {
+    const bool linear = task.model == "depthavg" && spec.depthavg_linear.has_value();
+    p.theory = exact_theories(c, !linear);
+    p.k_hat = p.theory.k_hat;
+    if (linear)
+      measure_linear(spec, c, p);
+    else
+      measure_seeded(spec, c, p, ctl);
+  } catch (const std::exception& e) {
+    p.completed = false;
+    p.message = e.what();
+  }
   return p;
+}
+
+// The process's store: the output file for one process, its part file for one of several.
+std::string store_path(const SweepSpec& spec) {
+  if (spec.out.empty()) return "";
+  return spec.ranks > 1 ? sweep_part_path(spec.out, spec.rank) : spec.out;
+}
+
+// Part files of earlier multi-process runs beside `out`, whatever their number of ranks.
+std::vector<std::string> part_files(const std::string& out) {
+  std::vector<std::string> found;
+  const std::filesystem::path p(out);
+  const std::filesystem::path dir = p.has_parent_path() ? p.parent_path() : ".";
+  const std::string prefix = p.filename().string() + ".rank";
+  if (!std::filesystem::is_directory(dir)) return found;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (name.starts_with(prefix) && name.ends_with(".h5")) found.push_back(e.path().string());
+  }
+  return found;
+}
+
+// The settings that decide a point's value, stored with the points and compared on resume.
+std::vector<std::pair<std::string, double>> settings(const SweepSpec& s) {
+  const Material& m = s.chute.material;
+  const ChuteCase& c = s.chute;
+  std::vector<std::pair<std::string, double>> v = {{"curve", static_cast<double>(c.curve)},
+                                                   {"angle_deg", c.angle_deg},
+                                                   {"h0", c.h0},
+                                                   {"mu_s", m.mu_s},
+                                                   {"mu_d", m.mu_d},
+                                                   {"I0", m.I0},
+                                                   {"d", m.d},
+                                                   {"phi", m.phi},
+                                                   {"rho_star", m.rho_star},
+                                                   {"g", m.g},
+                                                   {"mu_inf", m.mu_inf},
+                                                   {"alpha", m.alpha},
+                                                   {"kk_mu0", m.kk_mu0},
+                                                   {"kk_cK", m.kk_cK},
+                                                   {"hm_c", m.hm_c},
+                                                   {"depthavg_chi", s.depthavg_settings.chi}};
+  if (s.depthavg_linear) {
+    const depthavg::LinearRunParams& l = *s.depthavg_linear;
+    v.insert(v.end(), {{"linear_nx", static_cast<double>(l.nx)},
+                       {"linear_tolerance", l.tolerance},
+                       {"linear_amplitude", l.amplitude},
+                       {"linear_t_end", l.t_end},
+                       {"linear_reconstruction", static_cast<double>(l.reconstruction)},
+                       {"linear_co_moving", l.co_moving ? 1.0 : 0.0}});
+  } else {
+    v.insert(v.end(), {{"a0", c.a0},
+                       {"seed", static_cast<double>(c.seed)},
+                       {"t_end", c.t_end},
+                       {"dt_out", c.dt_out},
+                       {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
+                       {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
+                       {"depthavg_rtol", s.depthavg_settings.rtol},
+                       {"twod_nx", static_cast<double>(s.twod_settings.nx)},
+                       {"twod_nz", static_cast<double>(s.twod_settings.nz)},
+                       {"twod_Lz_over_h0", s.twod_settings.Lz_over_h0},
+                       {"twod_eta_max", s.twod_settings.eta_max},
+                       {"twod_rho_light", s.twod_settings.rho_light},
+                       {"twod_eta_light", s.twod_settings.eta_light},
+                       {"twod_chebyshev_N", static_cast<double>(s.twod_settings.chebyshev_N)}});
+  }
+  return v;
+}
+
+// Throws std::invalid_argument naming the first setting in which the stored sweep differs.
+void check_settings(const std::string& path, const SweepSpec& spec) {
+  const auto want = settings(spec);
+  const std::vector<double> have =
+      h5_has(path, "settings") ? h5_read_doubles(path, "settings") : std::vector<double>{};
+  std::string differs = have.size() != want.size() ? "which settings are stored" : "";
+  for (std::size_t i = 0; differs.empty() && i < want.size(); ++i)
+    if (have[i] != want[i].second) {
+      std::ostringstream s;
+      s << want[i].first << " " << have[i] << " there, " << want[i].second << " here";
+      differs = s.str();
+    }
+  if (!differs.empty())
+    throw std::invalid_argument(path + " holds a sweep with other settings (" + differs +
+                                "); remove it or choose another file to resume from");
+}
+
+void sort_points(std::vector<SweepPoint>& points) {
+  std::sort(points.begin(), points.end(), [](const SweepPoint& a, const SweepPoint& b) {
+    return a.model != b.model ? a.model < b.model : a.Lx < b.Lx;
+  });
 }
 
 }  // namespace
 
-std::vector<SweepPoint> run_sweep(const SweepSpec& spec, const SweepProgress& progress) {
-  std::vector<SweepPoint> points;
-  if (!spec.out.empty() && std::filesystem::exists(spec.out)) points = read_sweep(spec.out);
+std::string sweep_part_path(const std::string& out, int rank) {
+  return out + ".rank" + std::to_string(rank) + ".h5";
+}
+
+std::vector<SweepPoint> read_finished(const SweepSpec& spec) {
+  std::vector<SweepPoint> finished;
+  if (spec.out.empty()) return finished;
+  std::vector<std::string> files = part_files(spec.out);
+  if (std::filesystem::exists(spec.out)) files.insert(files.begin(), spec.out);
+  for (const auto& f : files) {
+    check_settings(f, spec);
+    for (SweepPoint& p : read_sweep(f)) {
+      const bool known = std::any_of(finished.begin(), finished.end(), [&](const SweepPoint& q) {
+        return same_point(q, {p.model, p.Lx});
+      });
+      if (!p.completed || known) continue;  // unfinished (interrupted) points are recomputed
+      p.resumed = true;
+      finished.push_back(p);
+    }
+  }
+  return finished;
+}
+
+std::vector<SweepPoint> run_share(const SweepSpec& spec, const std::vector<SweepPoint>& finished,
+                                  const SweepProgress& progress) {
   std::vector<Task> tasks;
   std::size_t index = 0;
   for (const char* model : {"depthavg", "twod"}) {
@@ -78,17 +241,15 @@ std::vector<SweepPoint> run_sweep(const SweepSpec& spec, const SweepProgress& pr
     for (double Lx : spec.Lx) {
       const Task t{model, Lx};
       const bool mine = static_cast<int>(index++ % spec.ranks) == spec.rank;
-      const bool done = std::any_of(points.begin(), points.end(), [&](const SweepPoint& p) {
-        return p.completed && same_point(p, t);
-      });
+      const bool done = std::any_of(finished.begin(), finished.end(),
+                                    [&](const SweepPoint& p) { return same_point(p, t); });
       if (mine && !done) tasks.push_back(t);
     }
   }
-  // Unfinished (interrupted) points from an earlier run are recomputed.
-  std::erase_if(points, [](const SweepPoint& p) { return !p.completed; });
-  const std::size_t total = tasks.size();
+  const std::string store = store_path(spec);
+  std::vector<SweepPoint> kept = finished, ran;
   std::mutex mutex;
-  std::size_t next = 0, done = 0;
+  std::size_t next = 0;
   RunControl ctl;
   ctl.stop = progress.stop;
   auto worker = [&] {
@@ -101,43 +262,126 @@ std::vector<SweepPoint> run_sweep(const SweepSpec& spec, const SweepProgress& pr
       }
       SweepPoint p = run_point(spec, t, ctl);
       std::lock_guard lock(mutex);
-      points.push_back(p);
-      ++done;
-      if (!spec.out.empty()) write_sweep(spec.out, spec, points);  // keep every finished point
-      if (progress.point_done) progress.point_done(p, done, total);
+      ran.push_back(p);
+      kept.push_back(p);
+      try {
+        if (!store.empty()) write_sweep(store, spec, kept);  // keep every finished point
+      } catch (const std::exception& e) {
+        ran.back().completed = false;
+        ran.back().message = "could not keep it in " + store + ": " + e.what();
+      }
+      if (progress.point_done) progress.point_done(ran.back(), ran.size(), tasks.size());
     }
   };
   std::vector<std::thread> pool;
-  const unsigned n = std::max(1u, std::min<unsigned>(spec.jobs, static_cast<unsigned>(total)));
-  for (unsigned i = 0; i < n; ++i) pool.emplace_back(worker);
+  const auto n = std::max<std::size_t>(1, std::min<std::size_t>(spec.jobs, tasks.size()));
+  for (std::size_t i = 0; i < n; ++i) pool.emplace_back(worker);
   for (auto& th : pool) th.join();
-  std::sort(points.begin(), points.end(), [](const SweepPoint& a, const SweepPoint& b) {
-    return a.model != b.model ? a.model < b.model : a.Lx < b.Lx;
-  });
+  return ran;
+}
+
+std::vector<SweepPoint> finish_sweep(const SweepSpec& spec, std::vector<SweepPoint> points) {
+  sort_points(points);
+  if (spec.out.empty()) return points;
+  write_sweep(spec.out, spec, points);
+  for (const auto& f : part_files(spec.out)) std::filesystem::remove(f);
   return points;
+}
+
+std::vector<SweepPoint> run_sweep(const SweepSpec& spec, const SweepProgress& progress) {
+  std::vector<SweepPoint> points = read_finished(spec);
+  const auto ran = run_share(spec, points, progress);
+  points.insert(points.end(), ran.begin(), ran.end());
+  return finish_sweep(spec, std::move(points));
 }
 
 namespace {
 // Column names of the per-point table in the HDF5 file, in this order.
-const char* const kColumns[] = {"Lx", "k_hat", "growth_rate", "phase_speed", "growth_rate_712",
-                                "growth_rate_exact", "phase_speed_exact", "exact_growth_rate",
-                                "exact_phase_speed", "exact_bagnold_growth_rate",
-                                "exact_bagnold_phase_speed", "exact_2d_growth_rate",
-                                "exact_2d_phase_speed", "wall_seconds", "completed"};
-std::vector<double> row(const SweepPoint& p) {
-  return {p.Lx, p.k_hat, p.growth_rate, p.phase_speed, p.growth_rate_712, p.growth_rate_exact,
-          p.phase_speed_exact, p.theory.exact.growth_rate, p.theory.exact.phase_speed,
-          p.theory.exact_bagnold.growth_rate, p.theory.exact_bagnold.phase_speed,
-          p.theory.exact_2d.growth_rate, p.theory.exact_2d.phase_speed, p.wall_seconds,
-          p.completed ? 1.0 : 0.0};
+const char* const kColumns[] = {"Lx",
+                                "k_hat",
+                                "growth_rate",
+                                "phase_speed",
+                                "growth_rate_712",
+                                "growth_rate_exact",
+                                "phase_speed_exact",
+                                "exact_growth_rate",
+                                "exact_phase_speed",
+                                "exact_bagnold_growth_rate",
+                                "exact_bagnold_phase_speed",
+                                "exact_2d_growth_rate",
+                                "exact_2d_phase_speed",
+                                "window_start",
+                                "window_end",
+                                "fit_r2",
+                                "steps",
+                                "mass_error",
+                                "wall_seconds",
+                                "completed"};
+constexpr std::size_t kWidth = std::size(kColumns);
+
+// The stored numbers of a point, in column order (`completed` last, as 0 or 1).
+std::vector<double*> fields(SweepPoint& p) {
+  return {&p.Lx,
+          &p.k_hat,
+          &p.growth_rate,
+          &p.phase_speed,
+          &p.growth_rate_712,
+          &p.growth_rate_exact,
+          &p.phase_speed_exact,
+          &p.theory.exact.growth_rate,
+          &p.theory.exact.phase_speed,
+          &p.theory.exact_bagnold.growth_rate,
+          &p.theory.exact_bagnold.phase_speed,
+          &p.theory.exact_2d.growth_rate,
+          &p.theory.exact_2d.phase_speed,
+          &p.window_start,
+          &p.window_end,
+          &p.fit_r2,
+          &p.steps,
+          &p.mass_error,
+          &p.wall_seconds};
+}
+std::vector<double> row(SweepPoint p) {
+  std::vector<double> r;
+  for (const double* f : fields(p)) r.push_back(*f);
+  r.push_back(p.completed ? 1.0 : 0.0);
+  return r;
+}
+SweepPoint from_row(const std::string& model, std::span<const double> r) {
+  SweepPoint p;
+  p.model = model;
+  std::size_t c = 0;
+  for (double* f : fields(p)) *f = r[c++];
+  p.completed = r[c] != 0.0;
+  p.theory.k_hat = p.k_hat;
+  return p;
 }
 }  // namespace
+
+std::vector<double> pack_points(const std::vector<SweepPoint>& points) {
+  std::vector<double> v;
+  for (const auto& p : points) {
+    v.push_back(p.model == "twod" ? 1.0 : 0.0);
+    const auto r = row(p);
+    v.insert(v.end(), r.begin(), r.end());
+  }
+  return v;
+}
+
+std::vector<SweepPoint> unpack_points(std::span<const double> packed) {
+  std::vector<SweepPoint> points;
+  for (std::size_t i = 0; i + kWidth < packed.size(); i += kWidth + 1)
+    points.push_back(
+        from_row(packed[i] == 1.0 ? "twod" : "depthavg", packed.subspan(i + 1, kWidth)));
+  return points;
+}
 
 void write_sweep(const std::string& path, const SweepSpec& spec,
                  const std::vector<SweepPoint>& points) {
   H5Writer out(path);
+  std::vector<double> k_hat;
   for (const char* model : {"depthavg", "twod"}) {
-    std::vector<std::vector<double>> cols(std::size(kColumns));
+    std::vector<std::vector<double>> cols(kWidth);
     for (const auto& p : points)
       if (p.model == model) {
         const auto r = row(p);
@@ -146,18 +390,29 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
     if (cols[0].empty()) continue;
     for (std::size_t c = 0; c < cols.size(); ++c)
       out.write(std::string(model) + "/" + kColumns[c], cols[c]);
+    if (std::string(model) == "depthavg") k_hat = cols[1];
   }
   const ChuteCase& k = spec.chute;
+  const SteadyState base = k.steady();
+  // The exact curve (7.11) with the run's chi around the depth-averaged points, for the figure.
+  if (!k_hat.empty())
+    write_dispersion_curve(out, "curve", base, spec.depthavg_settings.chi,
+                           *std::min_element(k_hat.begin(), k_hat.end()) / 3.0,
+                           *std::max_element(k_hat.begin(), k_hat.end()) * 3.0, 300);
+  std::vector<double> values;
+  std::string names;
+  for (const auto& [name, value] : settings(spec)) {
+    values.push_back(value);
+    names += (names.empty() ? "" : ",") + name;
+  }
+  out.write("settings", values);
+  out.attribute("settings", "names", names);
   out.attribute("/", "curve", std::string(curve_name(k.curve)));
   out.attribute("/", "angle_deg", k.angle_deg);
   out.attribute("/", "h0", k.h0);
-  out.attribute("/", "a0", k.a0);
-  out.attribute("/", "t_end", k.t_end);
-  out.attribute("/", "u_mean", k.steady().u_mean);
-  out.attribute("/", "depthavg_nx", static_cast<double>(spec.depthavg_settings.nx));
+  out.attribute("/", "u_mean", base.u_mean);
   out.attribute("/", "depthavg_chi", spec.depthavg_settings.chi);
-  out.attribute("/", "twod_nx", spec.twod_settings.nx);
-  out.attribute("/", "twod_nz", spec.twod_settings.nz);
+  out.attribute("/", "depthavg_measurement", spec.depthavg_linear ? "linear_run" : "seeded_run");
   out.close();
 }
 
@@ -169,19 +424,9 @@ std::vector<SweepPoint> read_sweep(const std::string& path) {
     std::vector<std::vector<double>> cols;
     for (const char* c : kColumns) cols.push_back(h5_read_doubles(path, g + c));
     for (std::size_t i = 0; i < cols[0].size(); ++i) {
-      SweepPoint p;
-      p.model = model;
-      std::size_t c = 0;
-      for (double* field : {&p.Lx, &p.k_hat, &p.growth_rate, &p.phase_speed, &p.growth_rate_712,
-                            &p.growth_rate_exact, &p.phase_speed_exact,
-                            &p.theory.exact.growth_rate, &p.theory.exact.phase_speed,
-                            &p.theory.exact_bagnold.growth_rate,
-                            &p.theory.exact_bagnold.phase_speed, &p.theory.exact_2d.growth_rate,
-                            &p.theory.exact_2d.phase_speed, &p.wall_seconds})
-        *field = cols[c++][i];
-      p.completed = cols[c][i] != 0.0;
-      p.theory.k_hat = p.k_hat;
-      points.push_back(p);
+      std::vector<double> r;
+      for (const auto& col : cols) r.push_back(col.at(i));
+      points.push_back(from_row(model, r));
     }
   }
   return points;

@@ -1,44 +1,65 @@
 // Dispersion sweeps over domain length (figure 13): for each Lx and each chosen model, one
 // seeded run measured with the same analysis (compare.hpp), beside the exact theories at that
-// k_hat. Points run in parallel on local cores; each finished point is written at once to the
-// output file (rewritten whole and renamed into place, so it is never half-written), and a
-// re-run with the same output file skips the points it already holds (resumable).
+// k_hat. The depth-averaged-only sweep may instead measure each point with the clean linear run
+// (depthavg/linear_run.hpp: normal mode (7.10), tight tolerances) against (7.11).
+//
+// Points run in parallel on local cores, and may be shared among processes (MPI ranks): point i
+// of the list (depthavg points first, then twod) runs on the process with i % ranks == rank.
+//
+// Resuming. Each finished point is written at once to the process's store (rewritten whole and
+// renamed into place, so it is never half-written): the output file itself for one process, the
+// part file "<out>.rank<r>.h5" for rank r of several. A sweep reads the completed points of the
+// output file and of any part files beside it (an interrupted multi-process run), skips them, and
+// at its end writes every point to the output file once and removes the part files. A stored
+// sweep whose settings differ from the new one is refused rather than mixed in.
 #pragma once
 
 #include <functional>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "compare.hpp"
+#include "depthavg/linear_run.hpp"
 
 namespace granbench {
 
 struct SweepPoint {
-  std::string model;             // "depthavg" or "twod"
+  std::string model;  // "depthavg" or "twod"
   double Lx = 0.0;
   double k_hat = 0.0;
-  double growth_rate = 0.0, phase_speed = 0.0;    // measured (spectral)
-  double growth_rate_712 = 0.0;                   // (7.12) over the same window (NaN if none)
+  double growth_rate = 0.0, phase_speed = 0.0;  // measured (spectral)
+  double growth_rate_712 = 0.0;                 // (7.12) over the same window (NaN if none)
   double growth_rate_exact = 0.0, phase_speed_exact = 0.0;  // the model's own theory
-  Theories theory;               // all three theories at this k_hat
+  Theories theory;                                          // all three theories at this k_hat
+  double window_start = 0.0, window_end = 0.0;              // of the spectral fit [s]
+  double fit_r2 = 0.0;                                      // of ln|h_k| over the window
+  double steps = 0.0;                                       // time steps of the run
+  double mass_error = 0.0;                                  // relative
   double wall_seconds = 0.0;
   bool completed = false;
-  std::string message;
+  bool resumed = false;  // read back from an earlier run (not stored)
+  std::string message;   // why a point did not complete (not stored)
 };
 
 struct SweepSpec {
-  ChuteCase chute;               // Lx is replaced by each point's
+  ChuteCase chute;  // Lx is replaced by each point's
   std::vector<double> Lx;
   bool depthavg = true, twod = false;
   DepthAvgSettings depthavg_settings;
+  // Set: depth-averaged points are clean linear runs with these parameters, judged against (7.11)
+  // with depthavg_settings.chi (depthavg_settings.nx is then unused).
+  std::optional<depthavg::LinearRunParams> depthavg_linear;
   TwodSettings twod_settings;
   unsigned jobs = 2;
-  std::string out;               // HDF5 file; empty: not written, nothing resumed
+  std::string out;  // HDF5 file; empty: not written, nothing resumed
   // This process's share of the points (MPI ranks): point i runs here if i % ranks == rank.
   int rank = 0, ranks = 1;
 };
 
-// Ls from "A:B:N" (N points evenly spaced from A to B inclusive); throws std::invalid_argument.
+// Ls from "A:B:N" (N points evenly spaced from A to B inclusive, 0 < A <= B, 1 <= N <= 10000);
+// throws std::invalid_argument.
 std::vector<double> parse_range(const std::string& text);
 
 struct SweepProgress {
@@ -46,9 +67,31 @@ struct SweepProgress {
   const std::atomic<bool>* stop = nullptr;
 };
 
-// All points of the spec (resumed ones included), sorted by model then Lx.
+// One process: read_finished, run_share, finish_sweep. All points of the spec (resumed ones
+// included), sorted by model then Lx.
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, const SweepProgress& progress = {});
 
+// The steps, for a sweep shared among processes:
+// the completed points kept in spec.out and its part files (marked resumed); throws
+// std::invalid_argument when spec.out holds a sweep with other settings;
+std::vector<SweepPoint> read_finished(const SweepSpec& spec);
+// this process's share of the points not in `finished`, each kept at once in the process's store
+// together with `finished`; returns the points it ran (an exception in one becomes an
+// uncompleted point with its message);
+std::vector<SweepPoint> run_share(const SweepSpec& spec, const std::vector<SweepPoint>& finished,
+                                  const SweepProgress& progress = {});
+// all points, sorted, written to spec.out once; the part files removed.
+std::vector<SweepPoint> finish_sweep(const SweepSpec& spec, std::vector<SweepPoint> points);
+
+// The store of rank r of several: "<out>.rank<r>.h5".
+std::string sweep_part_path(const std::string& out, int rank);
+// Points as one array of numbers (stored columns only), to send between processes.
+std::vector<double> pack_points(const std::vector<SweepPoint>& points);
+std::vector<SweepPoint> unpack_points(std::span<const double> packed);
+
+// The HDF5 file: per model a group of columns (Lx, k_hat, growth_rate, ...); the run settings as
+// the dataset "settings" (names in its attribute "names"), and root attributes for the figures;
+// with depthavg points, the exact curve (7.11) with the run's chi in the group "curve".
 void write_sweep(const std::string& path, const SweepSpec& spec,
                  const std::vector<SweepPoint>& points);
 std::vector<SweepPoint> read_sweep(const std::string& path);

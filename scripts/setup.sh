@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake pkg-config
   libsundials-dev libeigen3-dev libfftw3-dev libgsl-dev libhdf5-dev libcli11-dev
-  nlohmann-json3-dev googletest libgtest-dev
+  nlohmann-json3-dev googletest libgtest-dev libopenmpi-dev openmpi-bin
   python3 python3-matplotlib python3-h5py python3-numpy)
 
 missing=()

@@ -1,4 +1,4 @@
-// The two-model dispersion sweep; see sweep_models.hpp.
+// The sweep's processes, its table, JSON, HDF5 file and figure; see sweep_models.hpp.
 #include "sweep_models.hpp"
 
 #include <algorithm>
@@ -9,34 +9,45 @@
 #include <mutex>
 
 #include "commands.hpp"
+#include "mpi_session.hpp"
 #include "run_model.hpp"
-#include "sweep.hpp"
 
 namespace granbench::cli {
 
-void run_model_sweep(const FlowOptions& flow, const OutputOptions& output,
-                     const ModelSweepOptions& o) {
-  SweepSpec spec;
-  spec.chute.material = flow.material;
-  spec.chute.curve = flow.curve_kind();
-  spec.chute.angle_deg = flow.angle_deg;
-  spec.chute.h0 = flow.h0;
-  spec.chute.t_end = o.t_end;
-  (void)flow.steady();  // a slope with no steady flow is an error on --angle
-  spec.Lx = o.Lx;
-  spec.depthavg = o.depthavg;
-  spec.twod = o.twod;
-  spec.depthavg_settings.nx = o.nx_depthavg;
-  spec.depthavg_settings.chi = o.chi;
-  spec.twod_settings.nx = o.nx;
-  spec.twod_settings.nz = o.nz;
-  spec.jobs = o.jobs;
-  // Points are kept in the HDF5 file as they finish: that file is what a re-run resumes from.
-  spec.out = !output.out.empty() ? output.out : (!output.plot.empty() ? output.plot + ".data.h5" : "");
+namespace {
+
+struct SharedSweep {
+  std::vector<SweepPoint> points;  // all of them, on rank 0
+  bool root = true;
+  int ranks = 1;
+  bool interrupted = false;
+  std::string refused, failure;  // the stored sweep does not match; writing --out failed
+};
+
+// Steps 1-3 of sweep_models.hpp. Every rank takes the same path through the collective calls;
+// errors come back as values, to be raised after MPI_Finalize.
+SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
+  MpiSession mpi;
+  SharedSweep s;
+  s.root = mpi.root();
+  s.ranks = spec.ranks = mpi.size();
+  spec.rank = mpi.rank();
+  std::vector<double> kept{1.0};  // a leading 1: the stored points are usable
+  if (s.root) try {
+      const auto finished = pack_points(read_finished(spec));
+      kept.insert(kept.end(), finished.begin(), finished.end());
+    } catch (const std::invalid_argument& e) {
+      kept = {0.0};
+      s.refused = e.what();
+    }
+  kept = mpi.broadcast(kept);
+  if (kept[0] == 0.0) return s;
+  auto finished = unpack_points(std::span(kept).subspan(1));
+  for (SweepPoint& p : finished) p.resumed = true;
 
   const InterruptGuard guard;
   std::mutex io;
-  const bool show = progress_enabled(output);
+  const bool show = s.root && progress_enabled(output);
   SweepProgress progress;
   progress.stop = guard.flag();
   progress.point_done = [&](const SweepPoint& p, std::size_t done, std::size_t total) {
@@ -45,53 +56,143 @@ void run_model_sweep(const FlowOptions& flow, const OutputOptions& output,
     std::cerr << "  [" << done << "/" << total << "] " << p.model << " Lx = " << p.Lx
               << " m: growth " << p.growth_rate << " 1/s (" << p.wall_seconds << " s)\n";
   };
+  auto ran = run_share(spec, finished, progress);
+  if (s.ranks > 1) ran = unpack_points(mpi.gather(pack_points(ran)));
+  s.interrupted = guard.flag()->load();
+  if (s.root) try {
+      s.points = finished;
+      s.points.insert(s.points.end(), ran.begin(), ran.end());
+      s.points = finish_sweep(spec, std::move(s.points));
+    } catch (const std::exception& e) {
+      s.failure = e.what();
+    }
+  const bool written = mpi.broadcast({s.failure.empty() ? 1.0 : 0.0})[0] == 1.0;
+  if (written && s.ranks > 1 && !spec.out.empty())
+    std::filesystem::remove(sweep_part_path(spec.out, spec.rank));
+  return s;
+}
+
+nlohmann::json theory_json(const TheoryValue& t) {
+  return {{"growth_rate", t.growth_rate}, {"phase_speed", t.phase_speed}};
+}
+
+double relative_error(double measured, double exact) {
+  return std::fabs(measured - exact) / std::fabs(exact);
+}
+
+nlohmann::json point_json(const SweepPoint& p) {
+  return {
+      {"model", p.model},
+      {"Lx", p.Lx},
+      {"k_hat", p.k_hat},
+      {"growth_rate", number_or_null(p.growth_rate)},
+      {"growth_rate_exact", p.growth_rate_exact},
+      {"phase_speed", number_or_null(p.phase_speed)},
+      {"phase_speed_exact", p.phase_speed_exact},
+      {"growth_relative_error", number_or_null(relative_error(p.growth_rate, p.growth_rate_exact))},
+      {"phase_speed_relative_error",
+       number_or_null(relative_error(p.phase_speed, p.phase_speed_exact))},
+      {"growth_rate_712", number_or_null(p.growth_rate_712)},
+      {"exact_711", theory_json(p.theory.exact)},
+      {"exact_bagnold", theory_json(p.theory.exact_bagnold)},
+      {"exact_2d", theory_json(p.theory.exact_2d)},
+      {"window", {number_or_null(p.window_start), number_or_null(p.window_end)}},
+      {"fit_r2", number_or_null(p.fit_r2)},
+      {"steps", p.steps},
+      {"mass_error", number_or_null(p.mass_error)},
+      {"wall_seconds", p.wall_seconds},
+      {"completed", p.completed},
+      {"resumed", p.resumed},
+      {"status", p.completed         ? "completed"
+                 : p.message.empty() ? "unfinished"
+                                     : p.message}};
+}
+
+void print_table(const std::vector<SweepPoint>& points, const std::string& title) {
+  std::cout << title << "\n"
+            << std::setw(10) << "model" << std::setw(9) << "Lx [m]" << std::setw(9) << "k_hat"
+            << std::setw(12) << "growth" << std::setw(12) << "theory" << std::setw(10) << "rel.err"
+            << std::setw(11) << "speed" << std::setw(11) << "theory" << std::setw(10) << "rel.err"
+            << "\n";
+  for (const auto& p : points)
+    std::cout << std::setw(10) << p.model << std::setprecision(4) << std::setw(9) << p.Lx
+              << std::setw(9) << p.k_hat << std::setprecision(5) << std::setw(12) << p.growth_rate
+              << std::setw(12) << p.growth_rate_exact << std::setprecision(2) << std::setw(10)
+              << relative_error(p.growth_rate, p.growth_rate_exact) << std::setprecision(5)
+              << std::setw(11) << p.phase_speed << std::setw(11) << p.phase_speed_exact
+              << std::setprecision(2) << std::setw(10)
+              << relative_error(p.phase_speed, p.phase_speed_exact)
+              << (p.completed ? "" : "  (unfinished)") << (p.resumed ? "  (kept)" : "") << "\n";
+}
+
+}  // namespace
+
+void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohmann::json& settings,
+                       const std::string& title) {
+  // Points are kept in the HDF5 file as they finish: that file is what a re-run resumes from.
+  const bool keep_data = !output.out.empty();
+  spec.out = keep_data ? output.out : (!output.plot.empty() ? output.plot + ".data.h5" : "");
   const auto start = std::chrono::steady_clock::now();
-  const auto points = run_sweep(spec, progress);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SharedSweep s = run_shared(spec, output);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!s.refused.empty()) throw UsageError("--out: " + s.refused);
+  if (!s.root) return;
+  if (!s.failure.empty()) throw CommandFailed("sweep: " + s.failure, 1);
 
-  if (!output.plot.empty() && !points.empty()) run_plot_script("sweep_models.py", spec.out, output.plot);
-  if (output.out.empty() && !output.plot.empty()) std::filesystem::remove(spec.out);
-
-  if (output.json) {
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& p : points)
-      list.push_back({{"model", p.model},
-                      {"Lx", p.Lx},
-                      {"k_hat", p.k_hat},
-                      {"growth_rate", number_or_null(p.growth_rate)},
-                      {"growth_rate_exact", p.growth_rate_exact},
-                      {"phase_speed", number_or_null(p.phase_speed)},
-                      {"phase_speed_exact", p.phase_speed_exact},
-                      {"growth_rate_712", number_or_null(p.growth_rate_712)},
-                      {"exact_711", {{"growth_rate", p.theory.exact.growth_rate},
-                                     {"phase_speed", p.theory.exact.phase_speed}}},
-                      {"exact_bagnold", {{"growth_rate", p.theory.exact_bagnold.growth_rate},
-                                         {"phase_speed", p.theory.exact_bagnold.phase_speed}}},
-                      {"exact_2d", {{"growth_rate", p.theory.exact_2d.growth_rate},
-                                    {"phase_speed", p.theory.exact_2d.phase_speed}}},
-                      {"wall_seconds", p.wall_seconds},
-                      {"completed", p.completed}});
-    print_json({{"wall_seconds", wall}, {"jobs", o.jobs}, {"points", list}});
-  } else {
-    std::cout << "sweep over " << o.Lx.size() << " domain lengths (" << std::fixed
-              << std::setprecision(1) << wall << " s wall, " << o.jobs << " jobs)\n"
-              << std::setw(10) << "model" << std::setw(9) << "Lx [m]" << std::setw(11) << "growth"
-              << std::setw(11) << "theory" << std::setw(11) << "speed" << std::setw(11)
-              << "theory" << "\n";
-    for (const auto& p : points)
-      std::cout << std::setw(10) << p.model << std::setprecision(4) << std::setw(9) << p.Lx
-                << std::setprecision(3) << std::setw(11) << p.growth_rate << std::setw(11)
-                << p.growth_rate_exact << std::setw(11) << p.phase_speed << std::setw(11)
-                << p.phase_speed_exact << (p.completed ? "" : "  (unfinished)") << "\n";
+  const auto& points = s.points;
+  if (!output.plot.empty() && !points.empty()) {
+    const bool depthavg_only = !spec.twod;
+    run_plot_script(depthavg_only ? "sweep.py" : "sweep_models.py", spec.out, output.plot);
   }
-  const std::size_t expected = o.Lx.size() * ((o.depthavg ? 1 : 0) + (o.twod ? 1 : 0));
-  const auto finished = static_cast<std::size_t>(
-      std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return p.completed; }));
-  if (finished < expected)
+  if (!keep_data && !output.plot.empty()) std::filesystem::remove(spec.out);
+
+  const auto count = [&](auto pred) {
+    return static_cast<std::size_t>(std::count_if(points.begin(), points.end(), pred));
+  };
+  const std::size_t finished = count([](const SweepPoint& p) { return p.completed; });
+  const std::size_t resumed = count([](const SweepPoint& p) { return p.resumed; });
+  if (output.json) {
+    double worst = 0.0;  // over the unstable points, against each model's own theory
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& p : points) {
+      if (p.growth_rate_exact > 0.0 && p.completed)
+        worst = std::max(worst, relative_error(p.growth_rate, p.growth_rate_exact));
+      list.push_back(point_json(p));
+    }
+    nlohmann::json j = settings;
+    j.update({{"jobs", spec.jobs},
+              {"ranks", s.ranks},
+              {"wall_seconds", wall},
+              {"points_run", points.size() - resumed},
+              {"points_resumed", resumed},
+              {"max_growth_relative_error_unstable", worst},
+              {"points", list}});
+    print_json(j);
+  } else {
+    std::ostringstream head;
+    head << title << " (" << std::fixed << std::setprecision(1) << wall << " s wall, " << spec.jobs
+         << " jobs x " << s.ranks << " processes; " << resumed
+         << " points kept from an earlier run)";
+    print_table(points, head.str());
+  }
+  const std::size_t expected = spec.Lx.size() * ((spec.depthavg ? 1 : 0) + (spec.twod ? 1 : 0));
+  const std::string where = spec.out.empty() ? "" : " kept in " + spec.out;
+  if (finished < expected && s.interrupted)
     throw CommandFailed("interrupted with " + std::to_string(finished) + " of " +
-                            std::to_string(expected) + " points kept in " + spec.out +
+                            std::to_string(expected) + " points" + where +
                             "; run the same command again to resume",
                         130);
+  if (finished < expected) {
+    const auto bad = std::find_if(points.begin(), points.end(),
+                                  [](const SweepPoint& p) { return !p.completed; });
+    std::ostringstream m;
+    m << "sweep: " << expected - finished << " of " << expected << " points did not complete";
+    if (bad != points.end())
+      m << " (first: " << bad->model << " Lx = " << bad->Lx << ": "
+        << (bad->message.empty() ? "unfinished" : bad->message) << ")";
+    throw CommandFailed(m.str(), 3);
+  }
 }
 
 }  // namespace granbench::cli

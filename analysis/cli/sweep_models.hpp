@@ -1,28 +1,28 @@
-// `granbench sweep --model twod|both`: the dispersion sweep over domain lengths with the 2D model
-// (or both), on the resumable parallel engine of analysis/comparison/sweep.hpp. Each point is a
-// run seeded with the eigenmode of the model's own exact theory, measured spectrally; the table
-// sets each model beside its theory ((7.11) with the model's chi for depthavg, the 2D linear
-// stability for twod). The depth-averaged-only sweep keeps its own tighter path (cmd_sweep.cpp).
+// `granbench sweep`, after its options are read (cmd_sweep.cpp): runs the SweepSpec on the
+// resumable engine (analysis/comparison/sweep.hpp), shared among the processes when started by
+// mpirun (mpi_session.hpp), and reports it: the table or JSON, the HDF5 file and the figure.
+//
+// Under MPI, with R ranks:
+//   1. rank 0 reads the completed points kept in --out and in the part files "<out>.rank<r>.h5"
+//      beside it (left by a killed multi-process run) and sends them to every rank;
+//   2. each rank runs its share of the rest (point i on rank i % R) on --jobs threads, keeping
+//      every finished point at once in its own part file;
+//   3. the new points are gathered on rank 0, which writes --out once, complete, and removes the
+//      part files; then each rank removes its own (a file system of its own machine).
+// A run killed between 2 and 3 leaves the part files, and the next run — with any number of
+// ranks, or one process — resumes from them (parts of other machines that rank 0 cannot see are
+// run again). Only rank 0 prints (progress of its own points, the table or JSON) and plots.
 #pragma once
 
-#include <string>
-#include <vector>
+#include <nlohmann/json.hpp>
 
 #include "cli_common.hpp"
+#include "sweep.hpp"
 
 namespace granbench::cli {
 
-struct ModelSweepOptions {
-  bool depthavg = false, twod = true;
-  std::vector<double> Lx;
-  unsigned jobs = 2;
-  double t_end = 2.0;          // per point [s]
-  int nx = 80, nz = 16;        // 2D grid
-  std::size_t nx_depthavg = 256;
-  double chi = 1.0;
-};
-
-void run_model_sweep(const FlowOptions& flow, const OutputOptions& output,
-                     const ModelSweepOptions& o);
+// `settings`: the command's own keys for the JSON (chi, nx, ...); `title`: the table's first line.
+void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohmann::json& settings,
+                       const std::string& title);
 
 }  // namespace granbench::cli

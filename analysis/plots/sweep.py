@@ -19,12 +19,11 @@ import numpy as np
 def main(data, png):
     with h5py.File(data, "r") as f:
         c = {k: f["curve/" + k][:] for k in f["curve"]}
-        p = {k: f["points/" + k][:] for k in f["points"]}
-        chi = float(f.attrs["chi"])
+        p = {k: f["depthavg/" + k][:] for k in f["depthavg"]}
+        chi = float(f.attrs["depthavg_chi"])
         h0 = float(f.attrs["h0"])
         u0 = float(f.attrs["u_mean"])
-        model = f.attrs["model"]
-        model = model.decode() if isinstance(model, bytes) else str(model)
+    model = "depthavg"
     k = 2 * np.pi / c["Lx"]
     kp = 2 * np.pi / p["Lx"]
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.5))

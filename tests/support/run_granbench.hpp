@@ -16,12 +16,14 @@ struct CommandResult {
   std::string out, err;
 };
 
-// `args` is appended to the path of the granbench binary; stderr goes to a file named after
-// `tag` in the temporary directory.
-inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli") {
+// `args` is appended to the path of the granbench binary, which follows `launcher` (e.g.
+// "mpirun -np 2 ", empty: none); stderr goes to a file named after `tag` in the temporary
+// directory.
+inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli",
+                                   const std::string& launcher = "") {
   const auto errfile = std::filesystem::temp_directory_path() / ("granbench_" + tag + "_err.txt");
-  const std::string cmd =
-      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + errfile.string();
+  const std::string cmd = launcher + std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args +
+                          " 2>" + errfile.string();
   CommandResult r;
   FILE* p = popen(cmd.c_str(), "r");
   std::array<char, 4096> buf{};

@@ -95,5 +95,8 @@ std::vector<SweepPoint> unpack_points(std::span<const double> packed);
 void write_sweep(const std::string& path, const SweepSpec& spec,
                  const std::vector<SweepPoint>& points);
 std::vector<SweepPoint> read_sweep(const std::string& path);
+// Throws std::invalid_argument naming the first setting in which the sweep stored at `path`
+// differs from `spec` (sweep_store.cpp).
+void check_stored_settings(const std::string& path, const SweepSpec& spec);
 
 }  // namespace granbench

@@ -1,0 +1,211 @@
+// The sweep's HDF5 file and the points' trip between processes; see sweep.hpp.
+#include <algorithm>
+#include <sstream>
+
+#include "dispersion_curve.hpp"
+#include "hdf5_file.hpp"
+#include "sweep.hpp"
+
+namespace granbench {
+
+namespace {
+// The settings that decide a point's value, stored with the points and compared on resume.
+std::vector<std::pair<std::string, double>> settings(const SweepSpec& s) {
+  const Material& m = s.chute.material;
+  const ChuteCase& c = s.chute;
+  std::vector<std::pair<std::string, double>> v = {{"curve", static_cast<double>(c.curve)},
+                                                   {"angle_deg", c.angle_deg},
+                                                   {"h0", c.h0},
+                                                   {"mu_s", m.mu_s},
+                                                   {"mu_d", m.mu_d},
+                                                   {"I0", m.I0},
+                                                   {"d", m.d},
+                                                   {"phi", m.phi},
+                                                   {"rho_star", m.rho_star},
+                                                   {"g", m.g},
+                                                   {"mu_inf", m.mu_inf},
+                                                   {"alpha", m.alpha},
+                                                   {"kk_mu0", m.kk_mu0},
+                                                   {"kk_cK", m.kk_cK},
+                                                   {"hm_c", m.hm_c},
+                                                   {"depthavg_chi", s.depthavg_settings.chi}};
+  if (s.depthavg_linear) {
+    const depthavg::LinearRunParams& l = *s.depthavg_linear;
+    v.insert(v.end(), {{"linear_nx", static_cast<double>(l.nx)},
+                       {"linear_tolerance", l.tolerance},
+                       {"linear_amplitude", l.amplitude},
+                       {"linear_t_end", l.t_end},
+                       {"linear_reconstruction", static_cast<double>(l.reconstruction)},
+                       {"linear_co_moving", l.co_moving ? 1.0 : 0.0}});
+  } else {
+    v.insert(v.end(), {{"a0", c.a0},
+                       {"seed", static_cast<double>(c.seed)},
+                       {"t_end", c.t_end},
+                       {"dt_out", c.dt_out},
+                       {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
+                       {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
+                       {"depthavg_rtol", s.depthavg_settings.rtol},
+                       {"twod_nx", static_cast<double>(s.twod_settings.nx)},
+                       {"twod_nz", static_cast<double>(s.twod_settings.nz)},
+                       {"twod_Lz_over_h0", s.twod_settings.Lz_over_h0},
+                       {"twod_eta_max", s.twod_settings.eta_max},
+                       {"twod_rho_light", s.twod_settings.rho_light},
+                       {"twod_eta_light", s.twod_settings.eta_light},
+                       {"twod_chebyshev_N", static_cast<double>(s.twod_settings.chebyshev_N)}});
+  }
+  return v;
+}
+// Column names of the per-point table in the HDF5 file, in this order.
+const char* const kColumns[] = {"Lx",
+                                "k_hat",
+                                "growth_rate",
+                                "phase_speed",
+                                "growth_rate_712",
+                                "growth_rate_exact",
+                                "phase_speed_exact",
+                                "exact_growth_rate",
+                                "exact_phase_speed",
+                                "exact_bagnold_growth_rate",
+                                "exact_bagnold_phase_speed",
+                                "exact_2d_growth_rate",
+                                "exact_2d_phase_speed",
+                                "window_start",
+                                "window_end",
+                                "fit_r2",
+                                "steps",
+                                "mass_error",
+                                "wall_seconds",
+                                "completed"};
+constexpr std::size_t kWidth = std::size(kColumns);
+
+// The stored numbers of a point, in column order (`completed` last, as 0 or 1).
+std::vector<double*> fields(SweepPoint& p) {
+  return {&p.Lx,
+          &p.k_hat,
+          &p.growth_rate,
+          &p.phase_speed,
+          &p.growth_rate_712,
+          &p.growth_rate_exact,
+          &p.phase_speed_exact,
+          &p.theory.exact.growth_rate,
+          &p.theory.exact.phase_speed,
+          &p.theory.exact_bagnold.growth_rate,
+          &p.theory.exact_bagnold.phase_speed,
+          &p.theory.exact_2d.growth_rate,
+          &p.theory.exact_2d.phase_speed,
+          &p.window_start,
+          &p.window_end,
+          &p.fit_r2,
+          &p.steps,
+          &p.mass_error,
+          &p.wall_seconds};
+}
+std::vector<double> row(SweepPoint p) {
+  std::vector<double> r;
+  for (const double* f : fields(p)) r.push_back(*f);
+  r.push_back(p.completed ? 1.0 : 0.0);
+  return r;
+}
+SweepPoint from_row(const std::string& model, std::span<const double> r) {
+  SweepPoint p;
+  p.model = model;
+  std::size_t c = 0;
+  for (double* f : fields(p)) *f = r[c++];
+  p.completed = r[c] != 0.0;
+  p.theory.k_hat = p.k_hat;
+  return p;
+}
+}  // namespace
+
+// Throws std::invalid_argument naming the first setting in which the stored sweep differs.
+void check_stored_settings(const std::string& path, const SweepSpec& spec) {
+  const auto want = settings(spec);
+  const std::vector<double> have =
+      h5_has(path, "settings") ? h5_read_doubles(path, "settings") : std::vector<double>{};
+  std::string differs = have.size() != want.size() ? "which settings are stored" : "";
+  for (std::size_t i = 0; differs.empty() && i < want.size(); ++i)
+    if (have[i] != want[i].second) {
+      std::ostringstream s;
+      s << want[i].first << " " << have[i] << " there, " << want[i].second << " here";
+      differs = s.str();
+    }
+  if (!differs.empty())
+    throw std::invalid_argument(path + " holds a sweep with other settings (" + differs +
+                                "); remove it or choose another file to resume from");
+}
+
+std::vector<double> pack_points(const std::vector<SweepPoint>& points) {
+  std::vector<double> v;
+  for (const auto& p : points) {
+    v.push_back(p.model == "twod" ? 1.0 : 0.0);
+    const auto r = row(p);
+    v.insert(v.end(), r.begin(), r.end());
+  }
+  return v;
+}
+
+std::vector<SweepPoint> unpack_points(std::span<const double> packed) {
+  std::vector<SweepPoint> points;
+  for (std::size_t i = 0; i + kWidth < packed.size(); i += kWidth + 1)
+    points.push_back(
+        from_row(packed[i] == 1.0 ? "twod" : "depthavg", packed.subspan(i + 1, kWidth)));
+  return points;
+}
+
+void write_sweep(const std::string& path, const SweepSpec& spec,
+                 const std::vector<SweepPoint>& points) {
+  H5Writer out(path);
+  std::vector<double> k_hat;
+  for (const char* model : {"depthavg", "twod"}) {
+    std::vector<std::vector<double>> cols(kWidth);
+    for (const auto& p : points)
+      if (p.model == model) {
+        const auto r = row(p);
+        for (std::size_t c = 0; c < r.size(); ++c) cols[c].push_back(r[c]);
+      }
+    if (cols[0].empty()) continue;
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      out.write(std::string(model) + "/" + kColumns[c], cols[c]);
+    if (std::string(model) == "depthavg") k_hat = cols[1];
+  }
+  const ChuteCase& k = spec.chute;
+  const SteadyState base = k.steady();
+  // The exact curve (7.11) with the run's chi around the depth-averaged points, for the figure.
+  if (!k_hat.empty())
+    write_dispersion_curve(out, "curve", base, spec.depthavg_settings.chi,
+                           *std::min_element(k_hat.begin(), k_hat.end()) / 3.0,
+                           *std::max_element(k_hat.begin(), k_hat.end()) * 3.0, 300);
+  std::vector<double> values;
+  std::string names;
+  for (const auto& [name, value] : settings(spec)) {
+    values.push_back(value);
+    names += (names.empty() ? "" : ",") + name;
+  }
+  out.write("settings", values);
+  out.attribute("settings", "names", names);
+  out.attribute("/", "curve", std::string(curve_name(k.curve)));
+  out.attribute("/", "angle_deg", k.angle_deg);
+  out.attribute("/", "h0", k.h0);
+  out.attribute("/", "u_mean", base.u_mean);
+  out.attribute("/", "depthavg_chi", spec.depthavg_settings.chi);
+  out.attribute("/", "depthavg_measurement", spec.depthavg_linear ? "linear_run" : "seeded_run");
+  out.close();
+}
+
+std::vector<SweepPoint> read_sweep(const std::string& path) {
+  std::vector<SweepPoint> points;
+  for (const char* model : {"depthavg", "twod"}) {
+    const std::string g = std::string(model) + "/";
+    if (!h5_has(path, g + "Lx")) continue;
+    std::vector<std::vector<double>> cols;
+    for (const char* c : kColumns) cols.push_back(h5_read_doubles(path, g + c));
+    for (std::size_t i = 0; i < cols[0].size(); ++i) {
+      std::vector<double> r;
+      for (const auto& col : cols) r.push_back(col.at(i));
+      points.push_back(from_row(model, r));
+    }
+  }
+  return points;
+}
+
+}  // namespace granbench

@@ -19,5 +19,6 @@ void add_dispersion_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
+void add_case_command(CLI::App& app);
 
 }  // namespace granbench::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_sweep_command(app);
   add_compare_command(app);
+  add_case_command(app);
   try {
     // Options from --config files become ordinary options first (config_file.hpp).
     std::vector<std::string> args(argv + 1, argv + argc);

@@ -1,0 +1,232 @@
+// granbench case: the paper's cases (§5-§7) as runnable case files in cases/ with their figures.
+//
+//   granbench case --list
+//   granbench case decelerating                    (§5.2, figures 3-5)
+//   granbench case high-speed --resolution smoke   (§6.2, figure 8; the CI version)
+//   granbench case rollwave-8cm --out-dir runs/    (§7, figures 9-12)
+//
+// Each case file names its kind. The uniform-layer cases (decelerating, high-speed) run in this
+// process (analysis/cases/layer_case.hpp). The rollwave and wellposed cases are runs of other
+// subcommands (`run --model twod`, `wellposed`) with the options in the file's [run] table, so
+// the case is exactly what a user would type; they are started as child processes of this
+// binary and their JSON results collected. Every case writes <out-dir>/<name>*.h5 and draws its
+// figures as <out-dir>/<name>_*.png with the scripts in analysis/plots.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "case_file.hpp"
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "layer_case.hpp"
+#include "run_model.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+struct CaseOptions {
+  std::string name;
+  bool list = false;
+  std::string resolution = "paper";
+  std::string out_dir = ".";
+  std::string cases_dir = GRANBENCH_CASES_DIR;
+  unsigned jobs = 2;
+  OutputOptions output;
+};
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs this binary with `args`; returns its exit code and stdout (stderr passes through, so the
+// child's progress shows).
+std::pair<int, std::string> run_self(const std::vector<std::string>& args) {
+  std::string cmd = quoted(std::filesystem::read_symlink("/proc/self/exe").string());
+  for (const auto& a : args) cmd += " " + quoted(a);
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) throw CommandFailed("cannot start " + cmd, 1);
+  std::string out;
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 1, out};
+}
+
+nlohmann::json parse_child_json(const std::string& text) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
+std::string path_in(const CaseOptions& o, const std::string& file) {
+  return (std::filesystem::path(o.out_dir) / file).string();
+}
+
+// The uniform-layer cases: decelerating (§5.2) and high-speed (§6.2).
+nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
+  const cases::LayerCaseSpec spec = cases::layer_case_spec(file, o.resolution);
+  const InterruptGuard guard;
+  const cases::LayerCaseResult result =
+      cases::run_layer_case(spec, o.jobs, guard.flag(), progress_enabled(o.output));
+  const std::string h5 = path_in(o, spec.name + ".h5");
+  cases::write_layer_case(h5, spec, result);
+  const std::string png_prefix = path_in(o, spec.name);
+  run_plot_script("case_layer.py", h5, png_prefix);
+  nlohmann::json j = result.summary;
+  j["outputs"] = {h5, png_prefix + "_profiles.png", png_prefix + "_snapshots.png"};
+  if (!result.grid_dependence.empty()) j["outputs"].push_back(png_prefix + "_grid_dependence.png");
+  for (const auto& r : result.runs)
+    if (r.status == "interrupted") exit_code = 130;
+  return j;
+}
+
+// The rollwave cases (§7): `granbench run --model twod` with the file's [run] options.
+nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
+  const std::string h5 = path_in(o, file.name() + ".h5");
+  std::vector<std::string> args = {"run", "--model", "twod", "--json", "--out", h5};
+  if (o.output.quiet) args.push_back("--quiet");
+  for (const auto& [key, values] : file.table("run", o.resolution))
+    for (const auto& v : values) args.push_back("--" + key + "=" + v);
+  auto [code, text] = run_self(args);
+  exit_code = code;
+  nlohmann::json j = {{"case", file.name()}, {"resolution", o.resolution}, {"run", parse_child_json(text)}};
+  if (!std::filesystem::exists(h5)) return j;  // nothing computed (bad options: reported by the child)
+  const std::string png_prefix = path_in(o, file.name());
+  const double probe_x = file.number("probe_x", o.resolution);
+  const std::vector<double> window = file.numbers("probe_window", o.resolution);
+  const double field_time = file.number("field_time", o.resolution);
+  if (window.size() != 2) throw cases::CaseFileError(file.path() + ": key 'probe_window' must be [t0, t1]");
+  run_plot_script("case_rollwave.py", h5, png_prefix,
+                  std::to_string(probe_x) + " " + std::to_string(window[0]) + " " +
+                      std::to_string(window[1]) + " " + std::to_string(field_time));
+  j["outputs"] = {h5, png_prefix + "_fields.png", png_prefix + "_streamlines.png", png_prefix + "_surface.png"};
+  return j;
+}
+
+// The well-posedness figures (1, 2, 7): `granbench wellposed` for each of the file's curves.
+nlohmann::json run_wellposed_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
+  nlohmann::json j = {{"case", file.name()}, {"curves", nlohmann::json::object()}};
+  for (const auto& curve : file.texts("curves", o.resolution)) {
+    const std::string stem = path_in(o, file.name() + "_" + curve);
+    auto [code, text] = run_self({"wellposed", "--curve", curve, "--json", "--out", stem + ".h5",
+                                  "--plot", stem + ".png"});
+    if (code != 0) exit_code = code;
+    j["curves"][curve] = parse_child_json(text);
+    j["outputs"].push_back(stem + ".h5");
+    j["outputs"].push_back(stem + ".png");
+  }
+  return j;
+}
+
+void print_summary(const std::string& kind, const nlohmann::json& j) {
+  std::cout << "case " << j.value("case", std::string()) << " (" << kind << ")\n";
+  if (j.contains("runs")) {
+    std::cout << "  run                 status      t [s]   steps   initial I   final bulk I   steady I   "
+                 "ill-posed   wall [s]\n";
+    for (const auto& r : j["runs"]) {
+      auto num = [](const nlohmann::json& v) {
+        char b[32];
+        if (v.is_null()) return std::string("-");
+        std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+        return std::string(b);
+      };
+      char line[256];
+      std::snprintf(line, sizeof line, "  %-18s  %-10s  %5.3f  %6ld  %10s  %13s  %9s  %9s  %8.1f\n",
+                    r["label"].get<std::string>().c_str(), r["status"].get<std::string>().c_str(),
+                    r["t_reached"].get<double>(), r["steps"].get<long>(), num(r["initial_I"]).c_str(),
+                    num(r["final_bulk_I"]).c_str(), num(r["steady_I"]).c_str(),
+                    num(r["final_illposed_fraction"]).c_str(), r["wall_seconds"].get<double>());
+      std::cout << line;
+      if (!r["message"].get<std::string>().empty())
+        std::cout << "      " << r["message"].get<std::string>() << "\n";
+    }
+    for (const auto& [pair, d] : j["grid_dependence"].items()) {
+      const auto& v = d["rms_log10_I"];
+      std::cout << "  grid dependence " << pair << ": rms log10(I) difference";
+      for (std::size_t n = 0; n < v.size(); n += std::max<std::size_t>(1, v.size() / 5))
+        std::cout << "  t=" << d["t"][n].get<double>() << ": "
+                  << (v[n].is_null() ? std::string("-") : std::to_string(v[n].get<double>()));
+      std::cout << "  (end: " << (v.back().is_null() ? std::string("-") : std::to_string(v.back().get<double>()))
+                << ")\n";
+    }
+  }
+  if (j.contains("run") && j["run"].is_object()) {
+    const auto& r = j["run"];
+    std::cout << "  status " << r.value("status", std::string("?")) << ", t reached "
+              << r.value("t_reached", 0.0) << " s, wall " << r.value("wall_seconds", 0.0) << " s\n";
+    for (const char* key : {"growth_rate", "phase_speed", "wave_speed", "mass_error"})
+      if (r.contains(key) && !r[key].is_null()) std::cout << "  " << key << " " << r[key].dump() << "\n";
+  }
+  if (j.contains("outputs"))
+    for (const auto& f : j["outputs"]) std::cout << "  wrote " << f.get<std::string>() << "\n";
+}
+
+void run_case(const CaseOptions& o) {
+  if (o.list) {
+    for (const auto& f : cases::list_case_files(o.cases_dir))
+      std::cout << f.name() << "  [" << f.text("kind") << "]  "
+                << (f.has("title") ? f.text("title") : std::string()) << "\n";
+    return;
+  }
+  if (o.name.empty()) throw UsageError("NAME: a case name is required; see granbench case --list");
+  const std::string path = (std::filesystem::path(o.cases_dir) / (o.name + ".toml")).string();
+  if (!std::filesystem::exists(path)) {
+    std::string names;
+    for (const auto& f : cases::list_case_files(o.cases_dir)) names += (names.empty() ? "" : ",") + f.name();
+    throw UsageError("NAME: unknown case '" + o.name + "'; valid values {" + names + "}");
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  if (ec) throw UsageError("--out-dir: cannot create '" + o.out_dir + "': " + ec.message());
+
+  int exit_code = 0;
+  nlohmann::json j;
+  std::string kind;
+  try {
+    const cases::CaseFile file = cases::read_case_file(path);
+    kind = file.text("kind");
+    if (kind == "decelerating" || kind == "high-speed") j = run_layer_kind(file, o, exit_code);
+    else if (kind == "rollwave") j = run_rollwave_kind(file, o, exit_code);
+    else if (kind == "wellposed") j = run_wellposed_kind(file, o, exit_code);
+    else throw cases::CaseFileError(path + ": key 'kind' = '" + kind +
+                                    "'; valid values {decelerating,high-speed,rollwave,wellposed}");
+  } catch (const cases::CaseFileError& e) {
+    throw UsageError(std::string("case file ") + e.what());
+  }
+  j["kind"] = kind;
+  if (o.output.json) print_json(j);
+  else print_summary(kind, j);
+  if (exit_code == 130) throw CommandFailed("interrupted; the samples computed so far were kept", 130);
+  if (exit_code != 0) throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")", exit_code);
+}
+
+}  // namespace
+
+void add_case_command(CLI::App& app) {
+  auto o = std::make_shared<CaseOptions>();
+  CLI::App* sub = app.add_subcommand("case", "run one of the paper's cases (cases/*.toml) and draw its figures");
+  sub->add_option("name", o->name, "case name (see --list)");
+  sub->add_flag("--list", o->list, "list the cases");
+  sub->add_option("--resolution", o->resolution, "resolution {smoke,paper}: the CI version or the full case")
+      ->check(one_of({"smoke", "paper"}))
+      ->capture_default_str();
+  sub->add_option("--out-dir", o->out_dir, "directory for the HDF5 files and figures")->capture_default_str();
+  sub->add_option("--cases-dir", o->cases_dir, "directory of the case files")->capture_default_str();
+  sub->add_option("--jobs", o->jobs, "runs of a case computed at once, in [1, 256]")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
+  sub->add_flag("--json", o->output.json, "print the results as JSON");
+  sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");
+  sub->callback([o] { run_case(*o); });
+}
+
+}  // namespace granbench::cli

@@ -91,6 +91,7 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
       run.Lx = Lx, run.Lz = Lz;
       run.t_end = t_end;
       run.samples = samples;
+      if (f.has("noise", res)) run.noise = f.number_in("noise", res, 0.0, 0.5);
       run.label = curve + "_" + std::to_string(run.nx) + "x" + std::to_string(run.nz);
       // The initial state must exist: a steady Bagnold flow of the initial curve at angle0.
       try {

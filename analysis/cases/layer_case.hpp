@@ -9,6 +9,7 @@
 //   h0, Lx_over_h0, Lz_over_h0    layer depth [m] and domain size in units of h0
 //   nx, nz                        lists, one entry per resolution (coarse first)
 //   t_end, samples                run length [s] and evenly spaced sample times
+//   noise                         relative random noise on the initial velocity (default 0)
 //   eta_max, eta_min, D_min, dt_max, cfl, mixing   solver settings (twod/parameters.hpp)
 #pragma once
 

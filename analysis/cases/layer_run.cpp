@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "diagnostics.hpp"
 #include "initial_state.hpp"
@@ -57,9 +58,14 @@ LayerRunRecord run_layer(const LayerRunSpec& spec, const LayerRunProgress& progr
   const MuCurve initial_curve(spec.initial_curve, material, spec.h0);
   const SteadyState initial = steady_state(initial_curve, spec.initial_zeta, spec.h0);  // (5.4)-(5.5)
   const twod::Grid grid(spec.nx, spec.nz, spec.Lx, spec.Lz);
-  twod::Solver solver(grid, spec.params,
-                      twod::make_initial_state(grid, twod::perturbed_bagnold(initial, 0.0, spec.Lx),
-                                               spec.params));
+  twod::Fields start =
+      twod::make_initial_state(grid, twod::perturbed_bagnold(initial, 0.0, spec.Lx), spec.params);
+  // u (1 + noise r), r uniform in [-1, 1]; the first projection restores continuity.
+  std::mt19937_64 random(spec.seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  if (spec.noise > 0.0)
+    for (double& u : start.u) u *= 1.0 + spec.noise * uniform(random);
+  twod::Solver solver(grid, spec.params, std::move(start));
   LayerRunRecord r;
   r.label = spec.label;
   r.nx = spec.nx, r.nz = spec.nz, r.Lx = spec.Lx, r.Lz = spec.Lz;

@@ -1,8 +1,10 @@
 // A uniform-layer run of the 2D solver, the set-up of §5.2 and §6.2: the layer starts in the
 // Bagnold state (5.4)-(5.5) of one mu(I) curve and slope (flat surface, x-uniform), and evolves
 // under the solver's curve and slope, which may differ (the decelerating flow changes the slope
-// at t = 0; the high-speed flow starts the regularised run from Jop's I_zeta). Perturbations are
-// not seeded: any x-dependence grows from round-off, which is how ill posedness shows itself.
+// at t = 0; the high-speed flow starts the regularised run from Jop's I_zeta). The x-uniform
+// state stays exactly x-uniform on this grid (every column does the same arithmetic), so an
+// optional random noise on the initial velocity stands in for the round-off of an adaptive code:
+// in an ill-posed region it grows at the grid scale, in a well-posed one it decays.
 //
 // At `samples` evenly spaced times in [0, t_end] it records the downslope averages u(z) and I(z)
 // (figures 3, 5, 8b/d) and the 2D field of I (figures 4, 8a/c). A diverging run is caught and
@@ -30,6 +32,8 @@ struct LayerRunSpec {
   double Lx = 8e-3, Lz = 8e-3;    // [m]
   double t_end = 0.2;             // [s]
   int samples = 11;               // evenly spaced sample times, both ends included
+  double noise = 0.0;             // relative amplitude of the random noise on the initial u
+  unsigned seed = 1;              // of the noise
 };
 
 struct LayerRunRecord {

@@ -80,7 +80,10 @@ nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o,
   const std::string h5 = path_in(o, spec.name + ".h5");
   cases::write_layer_case(h5, spec, result);
   const std::string png_prefix = path_in(o, spec.name);
-  run_plot_script("case_layer.py", h5, png_prefix);
+  // snapshot_time: the time of the I snapshots (the decelerating layer is at rest by the end).
+  run_plot_script("case_layer.py", h5, png_prefix,
+                  file.has("snapshot_time", o.resolution)
+                      ? std::to_string(file.number("snapshot_time", o.resolution)) : "");
   nlohmann::json j = result.summary;
   j["outputs"] = {h5, png_prefix + "_profiles.png", png_prefix + "_snapshots.png"};
   if (!result.grid_dependence.empty()) j["outputs"].push_back(png_prefix + "_grid_dependence.png");

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Figures of the uniform-layer paper cases (`granbench case decelerating|high-speed`).
 
-usage: case_layer.py CASE.h5 PREFIX
+usage: case_layer.py CASE.h5 PREFIX [SNAPSHOT_TIME]
 writes PREFIX_profiles.png   downslope averages u(z) and I(z) at the sampled times, one column per
                              run (figures 3, 5 and 8b/d; I on a log scale, with the initial and the
                              run curve's steady I_zeta as vertical lines where they exist)
-       PREFIX_snapshots.png  the 2D field of I in the grains at the last sample of each run
-                             (figures 4 and 8a/c)
+       PREFIX_snapshots.png  the 2D field of I in the grains at the sample nearest SNAPSHOT_TIME
+                             (default: the last sample) of each run (figures 4 and 8a/c)
        PREFIX_grid_dependence.png  rms of log10(I_fine / I_coarse) over the layer against t, per
                              curve (when a case has two resolutions)
 """
@@ -22,7 +22,7 @@ import numpy as np
 from matplotlib.colors import LogNorm
 
 
-def main(data, prefix):
+def main(data, prefix, snapshot_time=None):
     with h5py.File(data, "r") as f:
         summary = json.loads(f.attrs["results_json"])
         h0 = float(f.attrs["h0"])
@@ -65,18 +65,21 @@ def main(data, prefix):
     plt.close(fig)
 
     # Snapshots of I at the last sample, log colour scale shared by all runs.
-    finite = np.concatenate([r["field"][-1][np.isfinite(r["field"][-1]) & (r["field"][-1] > 0)] for r in runs])
+    for r in runs:
+        r["snap"] = len(r["t"]) - 1 if snapshot_time is None else int(np.argmin(np.abs(r["t"] - snapshot_time)))
+    finite = np.concatenate([r["field"][r["snap"]][np.isfinite(r["field"][r["snap"]]) & (r["field"][r["snap"]] > 0)]
+                             for r in runs])
     lo, hi = (np.percentile(finite, 1), np.percentile(finite, 99.5)) if finite.size else (1e-6, 1)
     fig, ax = plt.subplots(n, 1, figsize=(7, 1.9 * n + 0.6), squeeze=False)
     for j, r in enumerate(runs):
-        field = np.ma.masked_invalid(r["field"][-1])
+        field = np.ma.masked_invalid(r["field"][r["snap"]])
         nz, nx = field.shape
         keep = int(np.ceil(min(1.05 * h0, r["Lz"]) / (r["Lz"] / nz)))
         im = ax[j, 0].imshow(field[:keep], origin="lower", aspect="auto", cmap="magma",
                              norm=LogNorm(vmin=max(lo, 1e-12), vmax=max(hi, 2 * lo)),
                              extent=[0, r["Lx"] / h0, 0, keep * r["Lz"] / nz / h0])
         meta = r["meta"]
-        ax[j, 0].set_title(f"{meta['curve']} {meta['nx']}x{meta['nz']}: I at t = {r['t'][-1]:.3g} s", fontsize=9)
+        ax[j, 0].set_title(f"{meta['curve']} {meta['nx']}x{meta['nz']}: I at t = {r['t'][r['snap']]:.3g} s", fontsize=9)
         ax[j, 0].set_ylabel("z / h0")
         fig.colorbar(im, ax=ax[j, 0], label="I")
     ax[-1, 0].set_xlabel("x / h0")
@@ -98,4 +101,4 @@ def main(data, prefix):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    main(sys.argv[1], sys.argv[2], float(sys.argv[3]) if len(sys.argv) > 3 else None)

@@ -1,7 +1,8 @@
 // The paper's cases in full (ctest label `paper`, not in CI: tens of minutes), checked against
 // the paper's claims (§5.2, §6.2, §7). The thresholds are the claims, not fits to our output:
 //  - decelerating (figures 3-5): the regularised runs agree between resolutions, the Jop runs
-//    disagree more than the regularised ones by the end;
+//    disagree more. Judged by the largest difference over the run: the layer is at rest from
+//    t ~ 0.08 s on, where the floor on |D| sets I for both curves alike (docs/paper-cases.md);
 //  - high-speed (figure 8): the Jop run is ill posed everywhere and blows up or stays ill posed;
 //    the regularised run converges on the I_zeta of (6.3) uniformly (within 2 %);
 //  - rollwaves (figures 9-12): the runs reach t = 10 s, conserve mass, and grow a wave.
@@ -25,16 +26,17 @@ nlohmann::json run_case(const std::string& name) {
   return nlohmann::json::parse(r.out);
 }
 
-double last(const nlohmann::json& series) {
-  for (auto it = series.rbegin(); it != series.rend(); ++it)
-    if (!it->is_null()) return it->get<double>();
-  return NAN;
+double largest(const nlohmann::json& series) {
+  double m = 0.0;
+  for (const auto& v : series)
+    if (!v.is_null()) m = std::max(m, v.get<double>());
+  return m;
 }
 
 TEST(PaperCase, DeceleratingRegularisedIsGridIndependentJopIsNot) {
   const auto j = run_case("decelerating");
-  const double jop = last(j["grid_dependence"]["jop_64x48_vs_jop_128x96"]["rms_log10_I"]);
-  const double reg = last(j["grid_dependence"]["low-i_64x48_vs_low-i_128x96"]["rms_log10_I"]);
+  const double jop = largest(j["grid_dependence"]["jop_64x48_vs_jop_128x96"]["rms_log10_I"]);
+  const double reg = largest(j["grid_dependence"]["low-i_64x48_vs_low-i_128x96"]["rms_log10_I"]);
   EXPECT_GT(jop, reg);
   EXPECT_LT(reg, 0.1);  // within a quarter of I between resolutions (0.1 decade)
 }

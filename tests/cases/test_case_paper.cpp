@@ -3,8 +3,9 @@
 //  - decelerating (figures 3-5): the regularised runs agree between resolutions, the Jop runs
 //    disagree more. Judged by the largest difference over the run: the layer is at rest from
 //    t ~ 0.08 s on, where the floor on |D| sets I for both curves alike (docs/paper-cases.md);
-//  - high-speed (figure 8): the Jop run is ill posed everywhere and blows up or stays ill posed;
-//    the regularised run converges on the I_zeta of (6.3) uniformly (within 2 %);
+//  - high-speed (figure 8): the Jop runs are ill posed: they blow up or give grid-dependent flows
+//    (the two resolutions more than 0.1 decade apart in I); the regularised runs converge on the
+//    I_zeta of (6.3) (within 2 %) and agree between resolutions (within 0.01 decade);
 //  - rollwaves (figures 9-12): the runs reach t = 10 s, conserve mass, and grow a wave.
 #include <gtest/gtest.h>
 
@@ -43,14 +44,18 @@ TEST(PaperCase, DeceleratingRegularisedIsGridIndependentJopIsNot) {
 
 TEST(PaperCase, HighSpeedRegularisedConvergesOnItsIzeta) {
   const auto j = run_case("high-speed");
+  bool jop_diverged = false;
   for (const auto& r : j["runs"]) {
     if (r["curve"] == "jop") {
-      EXPECT_TRUE(r["status"] == "diverged" || r["final_illposed_fraction"].get<double>() > 0.99) << r;
+      jop_diverged = jop_diverged || r["status"] == "diverged";
     } else {
       EXPECT_EQ(r["status"], "completed");
       EXPECT_NEAR(r["final_bulk_I"].get<double>() / r["steady_I"].get<double>(), 1.0, 0.02) << r;
     }
   }
+  const auto& gd = j["grid_dependence"];
+  EXPECT_LT(largest(gd["regularised_64x16_vs_regularised_128x32"]["rms_log10_I"]), 0.01);
+  if (!jop_diverged) EXPECT_GT(largest(gd["jop_64x16_vs_jop_128x32"]["rms_log10_I"]), 0.1);
 }
 
 TEST(PaperCase, RollwavesRunToTenSeconds) {

@@ -55,7 +55,9 @@ TEST(PaperCase, HighSpeedRegularisedConvergesOnItsIzeta) {
   }
   const auto& gd = j["grid_dependence"];
   EXPECT_LT(largest(gd["regularised_64x16_vs_regularised_128x32"]["rms_log10_I"]), 0.01);
-  if (!jop_diverged) EXPECT_GT(largest(gd["jop_64x16_vs_jop_128x32"]["rms_log10_I"]), 0.1);
+  if (!jop_diverged) {
+    EXPECT_GT(largest(gd["jop_64x16_vs_jop_128x32"]["rms_log10_I"]), 0.1);
+  }
 }
 
 TEST(PaperCase, RollwavesRunToTenSeconds) {

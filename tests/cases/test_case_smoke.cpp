@@ -60,11 +60,14 @@ TEST(CaseSmoke, DeceleratingLayersSlowDownFromTheSameState) {
     EXPECT_NEAR(r["initial_I"].get<double>(), 0.06373, 1e-4);
     EXPECT_LT(r["final_bulk_I"].get<double>(), r["initial_I"].get<double>()) << r["label"];
   }
-  // Above I1N the two curves are the same function, so in this short run (I stays above I1N) the
-  // runs agree to the tolerance of the iterative linear solves (1e-8 relative), not to the last
-  // bit: the curves' arithmetic differs by an ulp, which the solves carry along.
+  // Above I1N the two curves are the same function (I stays above 0.027 in this short run), so
+  // the runs differ only by how the iterative solves carry the curves' ulp-level differences: a
+  // relative residual of 1e-8 bounds the solution error only to within the condition number
+  // (measured difference: 7e-7). 1e-5 is that bound, and 1000 times smaller than the 1.4 %
+  // between the two resolutions, so a real difference between the curves would still fail here.
   const double I_jop = run_named(j, "jop_16x12")["final_bulk_I"].get<double>();
-  EXPECT_NEAR(run_named(j, "low-i_16x12")["final_bulk_I"].get<double>() / I_jop, 1.0, 1e-8);
+  EXPECT_NEAR(run_named(j, "low-i_16x12")["final_bulk_I"].get<double>() / I_jop, 1.0, 1e-5);
+  EXPECT_GT(std::abs(run_named(j, "jop_32x24")["final_bulk_I"].get<double>() / I_jop - 1.0), 1e-3);
   EXPECT_TRUE(j["grid_dependence"].contains("jop_16x12_vs_jop_32x24"));
 }
 

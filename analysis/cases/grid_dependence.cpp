@@ -1,24 +1,29 @@
 // Difference of the downslope-averaged I between two resolutions (grid_dependence.hpp).
 #include "grid_dependence.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace granbench::cases {
 
+int bulk_cells(int nz, double Lz, double h0) {
+  const double dz = Lz / nz;
+  return std::clamp(int(std::floor((h0 - dz) / dz + 1e-9)), 0, nz);
+}
+
 GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecord& fine, double h0) {
   if (coarse.nz <= 0 || fine.nz % coarse.nz != 0 || std::abs(fine.Lz - coarse.Lz) > 1e-12 * coarse.Lz)
     throw std::invalid_argument("grid_dependence: the fine grid must refine the coarse one in z");
   const int ratio = fine.nz / coarse.nz;
-  const double dz = coarse.Lz / coarse.nz;
-  const int bulk_cells = int(std::floor((h0 - dz) / dz + 1e-9));  // cells wholly below h0 - dz
+  const int bulk = bulk_cells(coarse.nz, coarse.Lz, h0);
   GridDependence out;
   const std::size_t nt = std::min(coarse.t.size(), fine.t.size());
   for (std::size_t n = 0; n < nt; ++n) {
     double sum = 0.0;
     int count = 0;
-    for (int k = 0; k < bulk_cells; ++k) {
+    for (int k = 0; k < bulk; ++k) {
       double fine_mean = 0.0;
       for (int q = 0; q < ratio; ++q) fine_mean += fine.I_profile[n][ratio * k + q] / ratio;
       const double c = coarse.I_profile[n][k];

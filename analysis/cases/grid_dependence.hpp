@@ -15,6 +15,9 @@
 
 namespace granbench::cases {
 
+// The number of cells k = 0 .. n-1 lying wholly below h0 - dz (the bulk of the layer).
+int bulk_cells(int nz, double Lz, double h0);
+
 struct GridDependence {
   std::vector<double> t;              // common sample times
   std::vector<double> rms_log10_I;    // [t] (NaN where either profile is missing)

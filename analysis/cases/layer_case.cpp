@@ -38,10 +38,9 @@ CurveKind curve_of(const CaseFile& f, const std::string& key, const std::string&
 // Mean of the downslope-averaged I over the bulk of the layer (cells wholly below h0 - dz).
 double bulk_mean_I(const LayerRunRecord& r, double h0) {
   if (r.I_profile.empty()) return nan;
-  const double dz = r.Lz / r.nz;
   double sum = 0.0;
   int n = 0;
-  for (int k = 0; k < r.nz && (k + 1) * dz <= h0 - dz + 1e-12; ++k)
+  for (int k = 0; k < bulk_cells(r.nz, r.Lz, h0); ++k)
     if (std::isfinite(r.I_profile.back()[k])) sum += r.I_profile.back()[k], ++n;
   return n > 0 ? sum / n : nan;
 }

@@ -21,6 +21,22 @@ namespace granbench::twod {
 //               with it against -3.0 1/s with the arithmetic rule.)
 enum class ViscosityMixing { Harmonic, Arithmetic };
 
+// Pressure at which the granular viscosity of interface cells and corners is evaluated:
+//   CellAverage   the cell-centre p (corners: mean of the four cells), as everywhere else
+//                 (default). At a corner on a flat surface lying on a cell face this p is
+//                 rho g cos(zeta) dz/4 > 0 while the weight above it is ~0, so
+//                 mu(I) p = tau needs I -> 0: eta hits eta_max and the corner is a plug that
+//                 locks the top half-cell of grains to the light fluid (docs/twod-validation.md).
+//   Extrapolated  the overburden: p interpolated linearly between the nearest fully granular
+//                 cell centre below and the light fluid's p at the column's surface height
+//                 h = sum f dz (corners: mean of the two columns), taken at the corner or at the
+//                 centroid of the cell's granular part; and interface corners are granular
+//                 (unmixed eta_g) below h and light fluid above it. Assumes a surface that is a
+//                 graph h(x). Removes the plug; the steady flux no longer depends on where the
+//                 surface sits in its cell. Not the default: it lowers the max-norm order of the
+//                 steady Bagnold test (top granular row) from > 1.4 to ~1.
+enum class InterfacePressure { CellAverage, Extrapolated };
+
 // Preconditioner of the conjugate-gradient solves (spd_solver.hpp, pcg.hpp):
 //   Multigrid      geometric V-cycle with z-line smoothing (pressure only; the default there)
 //   LineRelaxation symmetric z-line Gauss-Seidel (the default for the viscous step)
@@ -40,6 +56,7 @@ struct Rheology {
   double rho_light = 1.5;      // light-fluid density [kg m^-3]
   double eta_light = 1e-3;     // light-fluid viscosity [Pa s]
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
+  InterfacePressure interface_pressure = InterfacePressure::CellAverage;
   // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =
   // newtonian_eta when > 0.
   double newtonian_eta = 0.0;
@@ -57,7 +74,14 @@ struct SolverParams {
   LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
   LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;
   double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]
+  // Passes of predictor + projection per step. 1: eta from u^n, p^n (lagged one step). n > 1:
+  // each further pass recomputes eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta
+  // is taken at the new time level to the accuracy of the iteration.
+  int viscosity_passes = 1;
   bool advect_momentum = true;
+  // Time integration of the advective term: false = forward Euler (u^n . grad u^n), true =
+  // second-order Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1}.
+  bool advection_ab2 = false;
   bool advect_interface = true;
 };
 

@@ -19,6 +19,10 @@
 // Mixing in interface cells (Rheology::mixing, see parameters.hpp): arithmetic
 // eta = f eta_g + (1-f) eta_l (default), or harmonic 1/eta = f/eta_g + (1-f)/eta_l (Gerris' main
 // runs). f at a corner is the mean of its four cells.
+// Rheology::interface_pressure = Extrapolated (parameters.hpp) instead evaluates eta_g in
+// interface cells and at interface corners with the overburden pressure interpolated to the
+// surface height of the columns, and treats an interface corner as granular below that height
+// and as light fluid above it.
 #include "properties.hpp"
 
 #include <algorithm>
@@ -83,6 +87,35 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
         dudz = (u[g.at(i, k)] - u[g.at(i, k - 1)]) / g.dz;
       gam[g.at(i, k)] = dudz + dwdx;
     }
+  // Interface pressure (Rheology::interface_pressure): column heights and, per column, the
+  // highest full cell below the surface.
+  const bool extrapolate = model.rheology().interface_pressure == InterfacePressure::Extrapolated;
+  std::vector<double> hcol(nx, 0.0);
+  if (extrapolate)
+    for (int k = 0; k < nz; ++k)
+      for (int i = 0; i < nx; ++i) hcol[i] += f[g.at(i, k)] * g.dz;
+  // p at height z in column i (or the mean of columns i-1, i when `corner`): linear between the
+  // centre of the highest row below z whose cells are full and, at the surface height h, the
+  // pressure p_s of the lowest light-fluid row above (its overburden; 0 if there is none).
+  auto p_granular = [&](int i, double z, bool corner) {
+    const double h = corner ? 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]) : hcol[g.wrap(i)];
+    auto p_at = [&](int k) {
+      return std::max(corner ? 0.5 * (p[g.at(i - 1, k)] + p[g.at(i, k)]) : p[g.at(i, k)], 0.0);
+    };
+    auto all = [&](int k, double v) {
+      return corner ? f[g.at(i - 1, k)] == v && f[g.at(i, k)] == v : f[g.at(i, k)] == v;
+    };
+    int ka = std::max(int(std::floor(h / g.dz)), 0);  // lowest row entirely above the surface
+    while (ka < nz && !all(ka, 0.0)) ++ka;
+    const double ps = ka < nz ? p_at(ka) : 0.0;
+    if (z >= h) return ps;
+    int kb = std::min(int(std::floor(z / g.dz - 0.5)), nz - 1);  // row with centre below z
+    while (kb >= 0 && !all(kb, 1.0)) --kb;
+    if (kb < 0) return ps;
+    const double zb = g.zc(kb);
+    if (zb >= h) return ps;
+    return ps + (p_at(kb) - ps) * (h - z) / (h - zb);
+  };
   std::vector<double> Dxx(g.cells()), Dzz(g.cells());
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
@@ -92,7 +125,10 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
       const double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
                                   gam[g.at(i + 1, k + 1)]);
       const double D = std::sqrt(0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]) + Dxz * Dxz);
-      props.eta_c[c] = model.mix(f[c], model.granular(p[c], D));
+      double pc = p[c];
+      if (extrapolate && f[c] < 1.0 && f[c] > 0.0)  // at the centroid of the granular part
+        pc = p_granular(i, k * g.dz + 0.5 * std::min(f[c] * g.dz, g.dz), false);
+      props.eta_c[c] = model.mix(f[c], model.granular(pc, D));
       props.I_c[c] = model.inertial_number(p[c], D);
     }
   for (int k = 0; k <= nz; ++k) {
@@ -111,6 +147,14 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
       else
         pn = 0.25 * (p[a] + p[b] + p[c] + p[d]);
       const double fn = 0.25 * (f[a] + f[b] + f[c] + f[d]);
+      if (extrapolate && k > 0 && k < nz && fn < 1.0 && fn > 0.0) {
+        // an interface corner is granular when it lies below the surface of its two columns,
+        // with the overburden pressure there; light fluid otherwise (no mixing)
+        const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]);
+        props.eta_n[g.at(i, k)] = k * g.dz < h ? model.granular(p_granular(i, k * g.dz, true), D)
+                                               : model.rheology().eta_light;
+        continue;
+      }
       props.eta_n[g.at(i, k)] = model.mix(fn, model.granular(pn, D));
     }
   }

@@ -14,6 +14,10 @@
 //   dp               : div(grad dp / rho^{n+1}) = div u* / dt
 //   u^{n+1} = u* - dt grad dp / rho^{n+1},   p^{n+1} = p^n + dp
 //
+// Options (parameters.hpp, off by default): advection_ab2 replaces u^n . grad u^n by the
+// Adams-Bashforth extrapolation (1 + r/2) A^n - (r/2) A^{n-1}; viscosity_passes > 1 repeats the
+// predictor and projection with eta from the provisional u^{n+1}, p^{n+1} (Picard).
+//
 // After each step the state is checked: a NaN or a speed above velocity_limit stops the run
 // with a DivergenceError naming the time, the place and the quantity.
 #include "solver.hpp"
@@ -55,13 +59,40 @@ double Solver::step(double dt_limit) {
   // 3. momentum predictor
   if (params_.advect_momentum) {
     momentum_advection(g_, s_, adv_u_, adv_w_);
+    if (params_.advection_ab2) {
+      const bool have_old = !adv_u_old_.empty() && stats_.dt_last > 0.0;
+      adv_u_old_.swap(adv_u_);  // adv_u_old_ = A^n, adv_u_ = A^{n-1}
+      adv_w_old_.swap(adv_w_);
+      const double r = have_old ? dt / stats_.dt_last : 0.0;
+      if (!have_old) {
+        adv_u_ = adv_u_old_;
+        adv_w_ = adv_w_old_;
+      } else {
+        for (std::size_t n = 0; n < adv_u_.size(); ++n)
+          adv_u_[n] = (1.0 + 0.5 * r) * adv_u_old_[n] - 0.5 * r * adv_u_[n];
+        for (std::size_t n = 0; n < adv_w_.size(); ++n)
+          adv_w_[n] = (1.0 + 0.5 * r) * adv_w_old_[n] - 0.5 * r * adv_w_[n];
+      }
+    }
   } else {
     adv_u_.assign(g_.cells(), 0.0);
     adv_w_.assign(g_.w_faces(), 0.0);
   }
   stats_.viscous_iterations += viscous_.predict(s_, props_, adv_u_, adv_w_, dt, u_star_, w_star_);
   // 4. projection
+  if (params_.viscosity_passes > 1) old_ = s_;  // u^n, p^n for the further passes
   stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, s_);
+  // 5. optional Picard passes: eta from the provisional u^{n+1}, p^{n+1}, then steps 3-4 again
+  for (int pass = 1; pass < params_.viscosity_passes; ++pass) {
+    update_viscosity(g_, s_, model_, props_);
+    Fields next = old_;
+    stats_.viscous_iterations +=
+        viscous_.predict(old_, props_, adv_u_, adv_w_, dt, u_star_, w_star_);
+    stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, next);
+    s_.u.swap(next.u);
+    s_.w.swap(next.w);
+    s_.p.swap(next.p);
+  }
 
   s_.t += dt;
   ++stats_.steps;

@@ -69,7 +69,9 @@ class Solver {
   ViscousStep viscous_;
   Projection projection_;
   VofStats vof_;
+  Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
+  std::vector<double> adv_u_old_, adv_w_old_;  // A^n kept for the next step (advection_ab2)
   RunStatistics stats_;
 };
 

@@ -35,16 +35,6 @@ struct CompareOptions {
   std::size_t nx_depthavg = 0; // 0: from --resolution
 };
 
-struct Resolution {
-  int nx, nz;
-  std::size_t nx_depthavg;
-};
-Resolution resolution_preset(const std::string& name) {
-  if (name == "coarse") return {80, 16, 128};
-  if (name == "fine") return {320, 64, 512};
-  return {160, 32, 256};
-}
-
 nlohmann::json opt(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
@@ -133,12 +123,12 @@ void run_compare(const CompareOptions& o) {
   chute.dt_out = o.dt_out;
   (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
   if (chute.a0 >= chute.h0) throw UsageError("--a0: must be below h0; valid range (0, h0)");
-  const Resolution res = resolution_preset(o.resolution);
+  const GridPreset res = grid_preset(o.resolution);
   TwodSettings twod;
-  twod.nx = o.nx > 0 ? o.nx : res.nx;
-  twod.nz = o.nz > 0 ? o.nz : res.nz;
+  twod.nx = o.nx > 0 ? o.nx : res.twod_nx;
+  twod.nz = o.nz > 0 ? o.nz : res.twod_nz;
   DepthAvgSettings depthavg;
-  depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.nx_depthavg;
+  depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
 
   const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
@@ -213,7 +203,7 @@ void add_compare_command(CLI::App& app) {
   sub->add_option("--t-end", o->t_end, "simulated time [s], > 0")->check(positive())->capture_default_str();
   sub->add_option("--dt-out", o->dt_out, "sampling interval [s], > 0 (default: automatic)")->check(positive());
   sub->add_option("--resolution", o->resolution,
-                  "grids {coarse: 80x16 / 128, default: 160x32 / 256, fine: 320x64 / 512}")
+                  "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
       ->check(one_of({"coarse", "default", "fine"}))->capture_default_str();
   sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--nz", o->nz, "2D cells across Lz = 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);

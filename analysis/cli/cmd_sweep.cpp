@@ -86,8 +86,8 @@ void run_sweep(const SweepOptions& o) {
   } else {
     spec.chute.t_end = o.t_end > 0.0 ? o.t_end : 2.0;
     spec.depthavg_settings.nx = 256;
-    spec.twod_settings.nx = o.resolution == "fine" ? 320 : o.resolution == "default" ? 160 : 80;
-    spec.twod_settings.nz = spec.twod_settings.nx / 5;
+    spec.twod_settings.nx = grid_preset(o.resolution).twod_nx;
+    spec.twod_settings.nz = grid_preset(o.resolution).twod_nz;
     settings.update({{"resolution", o.resolution},
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
@@ -124,7 +124,7 @@ void add_sweep_command(CLI::App& app) {
                   "run length per point [s], > 0; default: max(4 periods, 0.5/|growth|), <= 5 s")
       ->check(positive());
   sub->add_option("--resolution", o->resolution,
-                  "2D grid of --model twod|both {coarse: 80x16, default: 160x32, fine: 320x64}")
+                  "2D grid of --model twod|both {coarse: 80x32, default: 160x64, fine: 320x128}")
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   add_depthavg_options(*sub, o->depthavg);

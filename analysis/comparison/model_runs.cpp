@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
@@ -98,6 +99,13 @@ twod::InitialCondition eigenmode_condition(const SteadyState& base, const MuCurv
 }
 
 }  // namespace
+
+GridPreset grid_preset(const std::string& name) {
+  if (name == "coarse") return {80, 32, 128};
+  if (name == "default") return {160, 64, 256};
+  if (name == "fine") return {320, 128, 512};
+  throw std::invalid_argument("grid_preset: unknown resolution '" + name + "'");
+}
 
 ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl) {
   const MuCurve curve = c.make_curve();

@@ -42,6 +42,16 @@ struct TwodSettings {
   int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
 };
 
+// The named grids of compare and sweep ({coarse, default, fine}): 2D grids with 16, 32 and 64
+// cells per h0 (Lz = 2 h0) and 128, 256, 512 depth-averaged cells. docs/twod-validation.md shows
+// the 2D growth rate converging from below with the cells per h0 and first turning positive, as
+// the 2D theory says, at 32. Throws std::invalid_argument for another name.
+struct GridPreset {
+  int twod_nx, twod_nz;
+  std::size_t depthavg_nx;
+};
+GridPreset grid_preset(const std::string& name);
+
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl = {});
 ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl = {});
 

@@ -1,7 +1,8 @@
 // Checkpoint file layout (HDF5): /state/{u,w,p,f} as stored on the staggered grid, and the
 // scalars /state/{t, steps, dt_last, initial_volume, nx, nz, Lx, Lz} as one-element datasets;
-// /surface is the SurfaceSeries recorded so far. A restart continues bit-for-bit from here
-// (the linear-solver warm starts aside).
+// /surface is the SurfaceSeries recorded so far; /warm_start holds the linear solvers' initial
+// guesses (Solver::warm_start). A restart continues bit-for-bit from here (with the default
+// forward-Euler advection; the Adams-Bashforth option's A^{n-1} is not saved).
 #include "checkpoint.hpp"
 
 #include "diagnostics.hpp"
@@ -30,6 +31,12 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
   scalar("Lx", g.Lx);
   scalar("Lz", g.Lz);
   if (series.nt() > 0) write_surface_series(out, "/surface", series);
+  const WarmStart w = solver.warm_start();
+  if (!w.viscous_increment.empty()) {
+    out.write("/warm_start/viscous_increment", w.viscous_increment);
+    out.write("/warm_start/viscous_dt", std::span<const double>(&w.viscous_dt, 1));
+  }
+  if (!w.pressure_increment.empty()) out.write("/warm_start/pressure_increment", w.pressure_increment);
   out.close();
 }
 
@@ -50,6 +57,12 @@ Checkpoint read_checkpoint(const std::string& path) {
       c.state.p.size() != c.grid.cells() || c.state.f.size() != c.grid.cells())
     throw std::runtime_error("checkpoint " + path + ": field sizes do not match its grid");
   if (h5_has(path, "/surface/h")) c.series = read_surface_series(path, "/surface");
+  if (h5_has(path, "/warm_start/viscous_increment")) {
+    c.warm_start.viscous_increment = h5_read_doubles(path, "/warm_start/viscous_increment");
+    c.warm_start.viscous_dt = h5_read_doubles(path, "/warm_start/viscous_dt").at(0);
+  }
+  if (h5_has(path, "/warm_start/pressure_increment"))
+    c.warm_start.pressure_increment = h5_read_doubles(path, "/warm_start/pressure_increment");
   return c;
 }
 

@@ -18,6 +18,7 @@ struct Checkpoint {
   double dt_last = 0.0;
   double initial_volume = 0.0;
   SurfaceSeries series;
+  WarmStart warm_start;  // empty in checkpoints written before it was saved
 };
 
 void write_checkpoint(const std::string& path, const Solver& solver, const SurfaceSeries& series);

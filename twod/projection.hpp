@@ -19,6 +19,9 @@ class Projection {
   // u^{n+1}, w^{n+1}, p^{n+1} = p^n + delta p. Returns the solver iterations.
   int project(const std::vector<double>& u_star, const std::vector<double>& w_star,
               const Properties& props, double dt, Fields& s);
+  // The initial guess of the next solve (the last pressure increment), for checkpoints.
+  const Eigen::VectorXd& warm_start() const { return x_; }
+  void set_warm_start(Eigen::VectorXd x) { x_ = std::move(x); }
   const SolveStats& stats() const {
     return kind_ == LinearSolverKind::Multigrid ? mg_stats_ : solver_.stats();
   }

@@ -128,7 +128,8 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
       double pc = p[c];
       if (extrapolate && f[c] < 1.0 && f[c] > 0.0)  // at the centroid of the granular part
         pc = p_granular(i, k * g.dz + 0.5 * std::min(f[c] * g.dz, g.dz), false);
-      props.eta_c[c] = model.mix(f[c], model.granular(pc, D));
+      props.eta_c[c] = f[c] > 0.0 ? model.mix(f[c], model.granular(pc, D))
+                                  : model.rheology().eta_light;  // mu(I) not needed
       props.I_c[c] = model.inertial_number(p[c], D);
     }
   for (int k = 0; k <= nz; ++k) {
@@ -155,7 +156,8 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
                                                : model.rheology().eta_light;
         continue;
       }
-      props.eta_n[g.at(i, k)] = model.mix(fn, model.granular(pn, D));
+      props.eta_n[g.at(i, k)] =
+          fn > 0.0 ? model.mix(fn, model.granular(pn, D)) : model.rheology().eta_light;
     }
   }
 }

@@ -45,6 +45,21 @@ void Solver::resume(long steps, double dt_last, double initial_volume) {
   stats_.initial_volume = initial_volume;
 }
 
+WarmStart Solver::warm_start() const {
+  const Eigen::VectorXd& v = viscous_.increment();
+  const Eigen::VectorXd& p = projection_.warm_start();
+  return {std::vector<double>(v.data(), v.data() + v.size()), viscous_.increment_dt(),
+          std::vector<double>(p.data(), p.data() + p.size())};
+}
+
+void Solver::set_warm_start(const WarmStart& w) {
+  viscous_.set_increment(Eigen::Map<const Eigen::VectorXd>(w.viscous_increment.data(),
+                                                           Eigen::Index(w.viscous_increment.size())),
+                         w.viscous_dt);
+  projection_.set_warm_start(Eigen::Map<const Eigen::VectorXd>(
+      w.pressure_increment.data(), Eigen::Index(w.pressure_increment.size())));
+}
+
 double Solver::step(double dt_limit) {
   double dt = choose_time_step(g_, s_, params_, stats_.dt_last);
   if (stats_.dt_last <= 0.0) dt = std::min(dt, params_.dt_initial);

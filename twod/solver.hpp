@@ -26,6 +26,15 @@ struct DivergenceError : std::runtime_error {
   double t, x, z;
 };
 
+// What the solver carries from one step to the next besides the state: the initial guesses of
+// its linear solves. Saved in checkpoints so that a restarted run repeats the uninterrupted one
+// exactly.
+struct WarmStart {
+  std::vector<double> viscous_increment;  // u* - u^n of the last predictor (solver unknowns)
+  double viscous_dt = 0.0;                // the step of that predictor
+  std::vector<double> pressure_increment; // the last projection's delta p
+};
+
 struct RunStatistics {
   long steps = 0;
   long viscous_iterations = 0, projection_iterations = 0;
@@ -57,6 +66,8 @@ class Solver {
   RunStatistics statistics() const;
   // Restore counters and the step size after a restart.
   void resume(long steps, double dt_last, double initial_volume);
+  WarmStart warm_start() const;
+  void set_warm_start(const WarmStart& w);
 
  private:
   void check_health() const;

@@ -8,6 +8,7 @@
 #include "grid.hpp"
 #include "parameters.hpp"
 #include "spd_solver.hpp"
+#include "viscous_operator.hpp"
 
 namespace granbench::twod {
 
@@ -20,13 +21,26 @@ class ViscousStep {
               const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
               std::vector<double>& w_star);
   const SolveStats& stats() const { return solver_.stats(); }
+  // The last predictor increment u* - u^n and its step: the next initial guess is
+  // u^n + (dt / dt_previous) increment. Kept in checkpoints so that a restart is exact.
+  const Eigen::VectorXd& increment() const { return increment_; }
+  double increment_dt() const { return dt_previous_; }
+  void set_increment(Eigen::VectorXd increment, double dt) {
+    increment_ = std::move(increment);
+    dt_previous_ = dt;
+  }
 
  private:
   Grid g_;
   double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
-  PatternedMatrix A_;
+  LinearSolverKind kind_;
+  double tol_;
+  ViscousOperator op_;
+  PatternedMatrix A_;  // assembled only for the sparse-matrix preconditioners
   SpdSolver solver_;
   Eigen::VectorXd b_, x_;
+  Eigen::VectorXd increment_;  // u* - u^n of the last predict (empty before the first)
+  double dt_previous_ = 0.0;
 };
 
 }  // namespace granbench::twod

@@ -154,6 +154,7 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
   SurfaceSeries series = SurfaceSeries::uniform_grid(o.Lx, o.nx, o.flow.h0);
   if (restart) {
     solver.resume(restart->steps, restart->dt_last, restart->initial_volume);
+    solver.set_warm_start(restart->warm_start);
     if (restart->series.nt() > 0) series = restart->series;
   }
   auto sample = [&] {

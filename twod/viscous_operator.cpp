@@ -1,0 +1,191 @@
+// Rows of the viscous matrix of viscous_step.cpp, written out per unknown. The matrix is the
+// sum of the mass terms rho V/dt and of K a a^T over the stress terms (a: difference stencil):
+//
+//   cell (i, k)     K = 2 eta_c V:  D_xx = (u_{i+1,k} - u_{i,k})/dx,  D_zz = (w_{i,k+1} - w_{i,k})/dz
+//   corner (i, k)   K = eta_n V:    gamma = (u_{i,k} - u_{i,k-1})/dz + (w_{i,k} - w_{i-1,k})/dx
+//   bed corner      K = eta_n V/2:  gamma = 2 u_{i,0}/dz (no slip, ghost u = -u)
+//
+// with w = 0 at the bed and the top w and top corners lagged (right-hand side). Row by row:
+//
+//   u(i,k): mu + (Kc_{i,k} + Kc_{i-1,k})/dx^2 + (Kn_{i,k} [2 Kn_{i,0} at the bed] + Kn_{i,k+1})/dz^2
+//           on the diagonal; -Kc/dx^2 to u(i+-1,k); -Kn/dz^2 to u(i,k-+1) (the line);
+//           +-Kn/(dx dz) to the four w's around it (corners k and k+1, interior only)
+//   w(i,k): mw + (Kc_{i,k} + Kc_{i,k-1})/dz^2 + (Kn_{i,k} + Kn_{i+1,k})/dx^2 on the diagonal;
+//           -Kc/dz^2 to w(i,k-+1) (the line); -Kn/dx^2 to w(i+-1,k); +-Kn/(dx dz) to the
+//           four u's around it
+//
+// One visitor per row type serves the product, the preconditioner and the assembly, so the
+// three cannot disagree; tests/twod/test_viscous_operator.cpp checks the product against the
+// assembled matrix and the symmetry.
+#include "viscous_operator.hpp"
+
+#include <stdexcept>
+
+namespace granbench::twod {
+
+ViscousOperator::ViscousOperator(const Grid& g)
+    : g_(g), nu_(g.nx * g.nz), ixx_(1.0 / (g.dx * g.dx)), izz_(1.0 / (g.dz * g.dz)),
+      ixz_(1.0 / (g.dx * g.dz)), mass_u_(g.cells()), mass_w_(g.cells()), kc_(g.cells()),
+      kn_(g.corners()) {
+  if (g.nx < 3 || g.nz < 2) throw std::invalid_argument("ViscousOperator: grid needs nx >= 3, nz >= 2");
+  lower_.resize(size());
+  inv_m_.resize(size());
+  cp_.resize(size());
+}
+
+template <class Visit>
+void ViscousOperator::visit_u_row(int i, int k, Visit&& visit) const {
+  // Periodic neighbours once; coefficients are stored column by column (see set()).
+  const int nx = g_.nx, nz = g_.nz, nzw = nz - 1;
+  const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
+  const int row = i * nz + k, row_left = il * nz + k, corner = i * (nz + 1) + k;
+  const double kc = kc_[row], kc_left = kc_[row_left];
+  const double kn_below = kn_[corner];
+  const bool interior_above = k + 1 < nz;  // the top corner is explicit
+  const double kn_above = interior_above ? kn_[corner + 1] : 0.0;
+  const double below_weight = k == 0 ? 2.0 * kn_below : kn_below;
+  visit(row, mass_u_[row] + (kc + kc_left) * ixx_ + (below_weight + kn_above) * izz_, Entry::Diag);
+  if (k > 0) visit(row - 1, -kn_below * izz_, Entry::Lower);
+  if (interior_above) visit(row + 1, -kn_above * izz_, Entry::Upper);
+  visit(ir * nz + k, -kc * ixx_, Entry::Off);
+  visit(row_left, -kc_left * ixx_, Entry::Off);
+  const int w_here = nu_ + i * nzw - 1, w_left = nu_ + il * nzw - 1;  // + k: w(., k)
+  if (k > 0) {
+    visit(w_here + k, kn_below * ixz_, Entry::Off);
+    visit(w_left + k, -kn_below * ixz_, Entry::Off);
+  }
+  if (interior_above) {
+    visit(w_here + k + 1, -kn_above * ixz_, Entry::Off);
+    visit(w_left + k + 1, kn_above * ixz_, Entry::Off);
+  }
+}
+
+template <class Visit>
+void ViscousOperator::visit_w_row(int i, int k, Visit&& visit) const {
+  const int nx = g_.nx, nz = g_.nz, nzw = nz - 1;
+  const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
+  const int cell = i * nz + k, corner = i * (nz + 1) + k;
+  const double kc = kc_[cell], kc_below = kc_[cell - 1];
+  const double kn = kn_[corner], kn_right = kn_[ir * (nz + 1) + k];
+  const int row = nu_ + i * nzw + k - 1;
+  visit(row, mass_w_[row - nu_] + (kc + kc_below) * izz_ + (kn + kn_right) * ixx_, Entry::Diag);
+  if (k > 1) visit(row - 1, -kc_below * izz_, Entry::Lower);
+  if (k + 1 < nz) visit(row + 1, -kc * izz_, Entry::Upper);
+  visit(nu_ + il * nzw + k - 1, -kn * ixx_, Entry::Off);
+  visit(nu_ + ir * nzw + k - 1, -kn_right * ixx_, Entry::Off);
+  visit(cell, kn * ixz_, Entry::Off);
+  visit(cell - 1, -kn * ixz_, Entry::Off);
+  visit(ir * nz + k, -kn_right * ixz_, Entry::Off);
+  visit(ir * nz + k - 1, kn_right * ixz_, Entry::Off);
+}
+
+template <class Visit>
+void ViscousOperator::visit_row(int row, Visit&& visit) const {
+  if (row < nu_)
+    visit_u_row(row / g_.nz, row % g_.nz, visit);
+  else
+    visit_w_row((row - nu_) / (g_.nz - 1), (row - nu_) % (g_.nz - 1) + 1, visit);
+}
+
+void ViscousOperator::set(const Properties& props, double dt) {
+  // Column by column (i nz + k for cells and u, i (nz - 1) + k - 1 for interior w, i (nz + 1) + k
+  // for corners), so that the loops along a line read contiguous memory.
+  const double V = g_.cell_volume();
+  const int nx = g_.nx, nz = g_.nz;
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k <= nz; ++k) {
+      const std::size_t c = g_.at(i, k);
+      if (k < nz) {
+        mass_u_[i * nz + k] = props.rho_u[c] * V / dt;
+        kc_[i * nz + k] = 2.0 * props.eta_c[c] * V;
+      }
+      if (k > 0 && k < nz) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V / dt;
+      kn_[i * (nz + 1) + k] = props.eta_n[c] * V;
+    }
+  // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k.
+  const int n = size();
+  for (int row = 0; row < n; ++row) {
+    double diag = 0.0, lower = 0.0, upper = 0.0;
+    bool continues_line = false;  // a lower line neighbour exists: it is row - 1
+    visit_row(row, [&](int, double value, Entry e) {
+      if (e == Entry::Diag) {
+        diag = value;
+      } else if (e == Entry::Lower) {
+        lower = value;
+        continues_line = true;
+      } else if (e == Entry::Upper) {
+        upper = value;
+      }
+    });
+    const double m = diag - (continues_line ? lower * cp_[row - 1] : 0.0);
+    lower_[row] = lower;
+    inv_m_[row] = 1.0 / m;
+    cp_[row] = upper * inv_m_[row];
+  }
+}
+
+void ViscousOperator::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  y.resize(size());
+  const int nx = g_.nx, nz = g_.nz;
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k < nz; ++k) {
+      double sum = 0.0;
+      visit_u_row(i, k, [&](int col, double value, Entry) { sum += value * x[col]; });
+      y[u_index(i, k)] = sum;
+    }
+  for (int i = 0; i < nx; ++i)
+    for (int k = 1; k < nz; ++k) {
+      double sum = 0.0;
+      visit_w_row(i, k, [&](int col, double value, Entry) { sum += value * x[col]; });
+      y[w_index(i, k)] = sum;
+    }
+}
+
+void ViscousOperator::solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  const int nz = g_.nz, first = u_index(i, 0);
+  double y = 0.0;
+  for (int k = 0; k < nz; ++k) {
+    const int row = first + k;
+    double rhs = r[row];
+    visit_u_row(i, k, [&](int col, double value, Entry e) {
+      if (e == Entry::Off) rhs -= value * z[col];
+    });
+    y = (rhs - lower_[row] * y) * inv_m_[row];
+    z[row] = y;
+  }
+  for (int row = first + nz - 2; row >= first; --row) z[row] -= cp_[row] * z[row + 1];
+}
+
+void ViscousOperator::solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  const int nz = g_.nz, first = w_index(i, 1);
+  double y = 0.0;
+  for (int k = 1; k < nz; ++k) {
+    const int row = first + k - 1;
+    double rhs = r[row];
+    visit_w_row(i, k, [&](int col, double value, Entry e) {
+      if (e == Entry::Off) rhs -= value * z[col];
+    });
+    y = (rhs - lower_[row] * y) * inv_m_[row];
+    z[row] = y;
+  }
+  for (int row = first + nz - 3; row >= first; --row) z[row] -= cp_[row] * z[row + 1];
+}
+
+void ViscousOperator::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  z.setZero(size());
+  const int nx = g_.nx;
+  for (int i = 0; i < nx; ++i) solve_u_line(i, r, z);
+  for (int i = 0; i < nx; ++i) solve_w_line(i, r, z);
+  for (int i = nx - 1; i >= 0; --i) solve_w_line(i, r, z);
+  for (int i = nx - 1; i >= 0; --i) solve_u_line(i, r, z);
+}
+
+void ViscousOperator::assemble(PatternedMatrix& A) const {
+  const int n = size();
+  A.begin(n);
+  for (int row = 0; row < n; ++row)
+    visit_row(row, [&](int col, double value, Entry) { A.add(row, col, value); });
+  A.end();
+}
+
+}  // namespace granbench::twod

@@ -1,0 +1,55 @@
+// The matrix of the backward-Euler viscous step (viscous_step.cpp) as a structured stencil on
+// the MAC grid, applied without assembling it, and its symmetric z-line Gauss-Seidel
+// preconditioner (viscous_operator.cpp).
+//
+// Unknowns: the u's of column i at i nz + k (0 <= k < nz), then the interior w's of column i at
+// nx nz + i (nz - 1) + (k - 1) (1 <= k < nz); a column's u's (and its w's) form one line.
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "fields.hpp"
+#include "grid.hpp"
+#include "spd_solver.hpp"
+
+namespace granbench::twod {
+
+class ViscousOperator {
+ public:
+  explicit ViscousOperator(const Grid& g);
+  int size() const { return nu_ + g_.nx * (g_.nz - 1); }
+  int u_index(int i, int k) const { return g_.wrap(i) * g_.nz + k; }
+  int w_index(int i, int k) const { return nu_ + g_.wrap(i) * (g_.nz - 1) + (k - 1); }
+
+  // Coefficients for one step: the face masses rho V / dt and the stress weights 2 eta_c V
+  // (cells) and eta_n V (corners) from the properties at the new level; then the Thomas factors
+  // of the lines.
+  void set(const Properties& props, double dt);
+  // y = A x.
+  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // z = M^{-1} r: one sweep over the lines (u-lines, then w-lines, columns ascending) and one
+  // in exactly the reverse order, from z = 0, so that M is symmetric.
+  void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  // The same matrix assembled (for the sparse-matrix preconditioners of SpdSolver).
+  void assemble(PatternedMatrix& A) const;
+
+ private:
+  // Where a matrix entry sits relative to its row's line: the diagonal, the line neighbour
+  // below or above, or outside the line.
+  enum class Entry { Diag, Lower, Upper, Off };
+  template <class Visit> void visit_u_row(int i, int k, Visit&& visit) const;
+  template <class Visit> void visit_w_row(int i, int k, Visit&& visit) const;
+  template <class Visit> void visit_row(int row, Visit&& visit) const;
+  void solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  void solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+
+  Grid g_;
+  int nu_;
+  double ixx_, izz_, ixz_;             // 1/dx^2, 1/dz^2, 1/(dx dz)
+  std::vector<double> mass_u_, mass_w_;  // rho V / dt on u- and interior w-faces
+  std::vector<double> kc_, kn_;          // 2 eta_c V per cell, eta_n V per corner
+  std::vector<double> lower_, inv_m_, cp_;  // Thomas factors per unknown
+};
+
+}  // namespace granbench::twod

@@ -79,12 +79,15 @@ void ViscousOperator::visit_w_row(int i, int k, Visit&& visit) const {
   visit(ir * nz + k - 1, kn_right * ixz_, Entry::Off);
 }
 
-template <class Visit>
-void ViscousOperator::visit_row(int row, Visit&& visit) const {
-  if (row < nu_)
-    visit_u_row(row / g_.nz, row % g_.nz, visit);
-  else
-    visit_w_row((row - nu_) / (g_.nz - 1), (row - nu_) % (g_.nz - 1) + 1, visit);
+template <class Each>
+void ViscousOperator::for_each_row(Each&& each) const {
+  const int nx = g_.nx, nz = g_.nz;
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k < nz; ++k)
+      each(u_index(i, k), [&](auto&& visit) { visit_u_row(i, k, visit); });
+  for (int i = 0; i < nx; ++i)
+    for (int k = 1; k < nz; ++k)
+      each(w_index(i, k), [&](auto&& visit) { visit_w_row(i, k, visit); });
 }
 
 void ViscousOperator::set(const Properties& props, double dt) {
@@ -103,11 +106,10 @@ void ViscousOperator::set(const Properties& props, double dt) {
       kn_[i * (nz + 1) + k] = props.eta_n[c] * V;
     }
   // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k.
-  const int n = size();
-  for (int row = 0; row < n; ++row) {
+  for_each_row([&](int row, auto&& entries) {
     double diag = 0.0, lower = 0.0, upper = 0.0;
     bool continues_line = false;  // a lower line neighbour exists: it is row - 1
-    visit_row(row, [&](int, double value, Entry e) {
+    entries([&](int, double value, Entry e) {
       if (e == Entry::Diag) {
         diag = value;
       } else if (e == Entry::Lower) {
@@ -121,24 +123,16 @@ void ViscousOperator::set(const Properties& props, double dt) {
     lower_[row] = lower;
     inv_m_[row] = 1.0 / m;
     cp_[row] = upper * inv_m_[row];
-  }
+  });
 }
 
 void ViscousOperator::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(size());
-  const int nx = g_.nx, nz = g_.nz;
-  for (int i = 0; i < nx; ++i)
-    for (int k = 0; k < nz; ++k) {
-      double sum = 0.0;
-      visit_u_row(i, k, [&](int col, double value, Entry) { sum += value * x[col]; });
-      y[u_index(i, k)] = sum;
-    }
-  for (int i = 0; i < nx; ++i)
-    for (int k = 1; k < nz; ++k) {
-      double sum = 0.0;
-      visit_w_row(i, k, [&](int col, double value, Entry) { sum += value * x[col]; });
-      y[w_index(i, k)] = sum;
-    }
+  for_each_row([&](int row, auto&& entries) {
+    double sum = 0.0;
+    entries([&](int col, double value, Entry) { sum += value * x[col]; });
+    y[row] = sum;
+  });
 }
 
 void ViscousOperator::solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
@@ -181,10 +175,10 @@ void ViscousOperator::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z)
 }
 
 void ViscousOperator::assemble(PatternedMatrix& A) const {
-  const int n = size();
-  A.begin(n);
-  for (int row = 0; row < n; ++row)
-    visit_row(row, [&](int col, double value, Entry) { A.add(row, col, value); });
+  A.begin(size());
+  for_each_row([&](int row, auto&& entries) {
+    entries([&](int col, double value, Entry) { A.add(row, col, value); });
+  });
   A.end();
 }
 

@@ -40,7 +40,8 @@ class ViscousOperator {
   enum class Entry { Diag, Lower, Upper, Off };
   template <class Visit> void visit_u_row(int i, int k, Visit&& visit) const;
   template <class Visit> void visit_w_row(int i, int k, Visit&& visit) const;
-  template <class Visit> void visit_row(int row, Visit&& visit) const;
+  // each(row, entries) for every row in index order; entries(visit) visits that row.
+  template <class Each> void for_each_row(Each&& each) const;
   void solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   void solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 

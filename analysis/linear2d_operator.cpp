@@ -26,7 +26,7 @@ double map_coordinate(VerticalMap map, double z) {
 }
 
 Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGrid& grid,
-                       VerticalMap map) {
+                       VerticalMap map, const SurfaceLayerScaling& layer) {
   using cd = std::complex<double>;
   const int m = map_power(map);
   // eta_s / z_s ~ s^(m beta - m + 1) must stay bounded at the surface s = 0.
@@ -54,16 +54,19 @@ Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGr
     const double z = map_height(map, s);
     const double zs = -m * std::pow(s, m - 1);         // dz/ds
     const double depth_pow = std::pow(s, m * b.beta);  // (1 - z)^beta
-    const double eta_n = b.eta_n0 * depth_pow;
-    const double eta_s = b.eta_s0 * depth_pow;
-    const double a = -(b.eta_s0 / m) * std::pow(s, a_power);  // eta_s / z_s
+    const bool in_layer = 1.0 - z < layer.depth;
+    const double fn = in_layer ? layer.eta_n : 1.0, fs = in_layer ? layer.eta_s : 1.0;
+    const double q = in_layer ? layer.q * b.q : b.q;
+    const double eta_n = fn * b.eta_n0 * depth_pow;
+    const double eta_s = fs * b.eta_s0 * depth_pow;
+    const double a = -fs * (b.eta_s0 / m) * std::pow(s, a_power);  // eta_s / z_s
     const double U0 = b.U0(z), dU0 = b.dU0(z);
 
     // Constitutive law tau_xz = eta_s (du/dz + i k w) + q p, p = N - 2 i k eta_n u  (3.2)-(3.3)
     P.A.block(iu + j, iu, 1, n) = (-a * D.row(j)).cast<cd>();
-    P.A(iu + j, iu + j) += 2.0 * b.q * eta_n * ik;
+    P.A(iu + j, iu + j) += 2.0 * q * eta_n * ik;
     P.A(iu + j, iw + j) = -eta_s * ik;
-    P.A(iu + j, iN + j) = -b.q;
+    P.A(iu + j, iN + j) = -q;
     P.A(iu + j, iT + j) = 1.0;
     // Mass (2.9): i k u + dw/dz = 0
     P.A.block(iw + j, iw, 1, n) = D.row(j).cast<cd>();

@@ -60,9 +60,17 @@ double map_height(VerticalMap map, double s);
 // s in [0, 1] of the height z in [0, 1] (inverse of map_height).
 double map_coordinate(VerticalMap map, double z);
 
+// A sensitivity probe of the surface mode (bench/twod_linear_check, docs/twod-validation.md):
+// within the scaled depth 1 - z < depth below the surface, eta_n, eta_s and q are multiplied by
+// the given factors. The default (depth 0) leaves the operator as derived.
+struct SurfaceLayerScaling {
+  double depth = 0.0;
+  double eta_n = 1.0, eta_s = 1.0, q = 1.0;
+};
+
 // Assemble A and B for wavenumber k_hat = k h0 on the grid. Throws std::invalid_argument if the
 // map cannot carry the viscosity profile (the Newtonian film needs the linear map).
 Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGrid& grid,
-                       VerticalMap map);
+                       VerticalMap map, const SurfaceLayerScaling& layer = {});
 
 }  // namespace granbench::linear2d

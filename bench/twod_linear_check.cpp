@@ -100,74 +100,6 @@ std::vector<std::pair<cd, double>> matrix_pencil(const std::vector<cd>& y, doubl
   return out;
 }
 
-// assemble_pencil (analysis/linear2d_operator.cpp) with the viscosities eta_n, eta_s multiplied
-// by fn, fs and q by fq within the depth 1 - z < delta (scaled) below the surface: how sensitive
-// the surface mode is to the rheology of a thin surface layer.
-linear2d::Pencil surface_layer_pencil(const linear2d::LinearBaseState& b, double k_hat,
-                                      const linear2d::ChebyshevGrid& grid, double delta, double fn,
-                                      double fs, double fq) {
-  using linear2d::VerticalMap;
-  const int m = 2;
-  const int N = grid.intervals(), n = N + 1;
-  linear2d::Pencil P;
-  P.N = N;
-  P.map = VerticalMap::SquareRoot;
-  const int dim = 4 * n + 1;
-  P.A = Eigen::MatrixXcd::Zero(dim, dim);
-  P.B = Eigen::MatrixXcd::Zero(dim, dim);
-  const Eigen::MatrixXd& D = grid.D();
-  const cd ik(0.0, k_hat);
-  const double k2 = k_hat * k_hat, F2 = b.F * b.F;
-  const int iu = P.u(), iw = P.w(), iN = P.normal(), iT = P.shear(), iH = P.h();
-  for (int j = 0; j < n; ++j) {
-    const double sj = grid.s()(j);
-    const double z = linear2d::map_height(P.map, sj);
-    const bool layer = 1.0 - z < delta;
-    const double cn = layer ? fn : 1.0, cs = layer ? fs : 1.0, cq = layer ? fq : 1.0;
-    const double zs = -m * std::pow(sj, m - 1);
-    const double depth_pow = std::pow(sj, m * b.beta);
-    const double eta_n = cn * b.eta_n0 * depth_pow;
-    const double eta_s = cs * b.eta_s0 * depth_pow;
-    const double a = -cs * (b.eta_s0 / m) * std::pow(sj, m * b.beta - m + 1.0);
-    const double q = cq * b.q;
-    const double U0 = b.U0(z), dU0 = b.dU0(z);
-    P.A.block(iu + j, iu, 1, n) = (-a * D.row(j)).cast<cd>();
-    P.A(iu + j, iu + j) += 2.0 * q * eta_n * ik;
-    P.A(iu + j, iw + j) = -eta_s * ik;
-    P.A(iu + j, iN + j) = -q;
-    P.A(iu + j, iT + j) = 1.0;
-    P.A.block(iw + j, iw, 1, n) = D.row(j).cast<cd>();
-    P.A(iw + j, iu + j) = zs * ik;
-    P.A.block(iT + j, iT, 1, n) = D.row(j).cast<cd>();
-    P.A(iT + j, iu + j) = -zs * (F2 * ik * U0 + 4.0 * eta_n * k2);
-    P.A(iT + j, iw + j) = -zs * F2 * dU0;
-    P.A(iT + j, iN + j) = -zs * ik;
-    P.B(iT + j, iu + j) = zs * F2;
-    P.A.block(iN + j, iN, 1, n) = D.row(j).cast<cd>();
-    P.A(iN + j, iT + j) = -zs * ik;
-    P.A(iN + j, iw + j) = zs * F2 * ik * U0;
-    P.B(iN + j, iw + j) = -zs * F2;
-  }
-  auto replace_row = [&](int row) {
-    P.A.row(row).setZero();
-    P.B.row(row).setZero();
-  };
-  replace_row(iu);
-  P.A(iu, iu) = 1.0;
-  replace_row(iw);
-  P.A(iw, iw) = 1.0;
-  replace_row(iT + N);
-  P.A(iT + N, iT + N) = 1.0;
-  P.A(iT + N, iH) = -b.mu;
-  replace_row(iN + N);
-  P.A(iN + N, iN + N) = 1.0;
-  P.A(iN + N, iH) = -1.0;
-  P.A(iH, iH) = -ik * b.U_surface();
-  P.A(iH, iw + N) = 1.0;
-  P.B(iH, iH) = 1.0;
-  return P;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -327,7 +259,8 @@ int main(int argc, char** argv) {
     const linear2d::ChebyshevGrid fine(int(a.num("layer_N", 64)));
     const double delta = a.num("layer", 0.0) / h0;
     auto lam_of = [&](double fn, double fs, double fq) {
-      const auto P = surface_layer_pencil(b, k_hat, fine, delta, fn, fs, fq);
+      const auto P = linear2d::assemble_pencil(b, k_hat, fine, linear2d::VerticalMap::SquareRoot,
+                                              {delta, fn, fs, fq});
       const auto ev = linear2d::finite_eigenvalues(P, lam_hat + cd(0.01, 0.013));
       cd best = ev.front();
       for (const cd& e : ev)

@@ -87,3 +87,36 @@ TEST(Linear2DEigenmode, FieldsSatisfyTheLinearisedConditions) {
   EXPECT_NEAR(std::abs(same.u_hat(0.3 * s.h0) - mode.u_hat(0.3 * s.h0)), 0.0,
               1e-9 * std::abs(mode.u_hat(0.3 * s.h0)));
 }
+
+// The surface-layer scaling (a sensitivity probe): unit factors leave the operator as derived,
+// and other factors change only the constitutive rows of nodes inside the layer.
+TEST(Linear2DOperator, SurfaceLayerScalingActsOnlyInsideTheLayer) {
+  const Material m;
+  const MuCurve curve(CurveKind::Regularised, m, 4e-3);
+  const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
+  const LinearBaseState b = mu_i_base_state(s, curve);
+  const ChebyshevGrid grid(16);
+  const VerticalMap map = VerticalMap::SquareRoot;
+  const Pencil plain = assemble_pencil(b, 0.3, grid, map);
+  const Pencil unit = assemble_pencil(b, 0.3, grid, map, {0.2, 1.0, 1.0, 1.0});
+  EXPECT_EQ((plain.A - unit.A).norm(), 0.0);
+  EXPECT_EQ((plain.B - unit.B).norm(), 0.0);
+  const double depth = 0.2;
+  const Pencil scaled = assemble_pencil(b, 0.3, grid, map, {depth, 2.0, 3.0, 0.5});
+  EXPECT_EQ((plain.B - scaled.B).norm(), 0.0);
+  int changed_inside = 0;
+  for (int j = 0; j <= grid.intervals(); ++j) {
+    const bool inside = 1.0 - map_height(map, grid.s()(j)) < depth;
+    for (int row : {plain.u() + j, plain.shear() + j}) {
+      const double diff = (plain.A.row(row) - scaled.A.row(row)).norm();
+      if (!inside) {
+        EXPECT_EQ(diff, 0.0) << "row " << row;
+      } else if (diff > 0.0) {  // (the surface row of the shear block is the stress condition)
+        ++changed_inside;
+      }
+    }
+    EXPECT_EQ((plain.A.row(plain.w() + j) - scaled.A.row(plain.w() + j)).norm(), 0.0);
+    EXPECT_EQ((plain.A.row(plain.normal() + j) - scaled.A.row(plain.normal() + j)).norm(), 0.0);
+  }
+  EXPECT_GT(changed_inside, 0);
+}

@@ -15,8 +15,6 @@
 //                sweeps instead when an odd size stops the coarsening above 2048 cells.
 #include "pressure_multigrid.hpp"
 
-#include <algorithm>
-
 namespace granbench::twod {
 
 void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
@@ -138,24 +136,24 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
 
 void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b,
                                    Eigen::VectorXd& x, bool forward) const {
-  // Zebra order: even columns, then odd ones (forward), the exact reverse backward. Columns of
-  // one colour are not neighbours (for nx != 3), so they are solved two at a time.
+  // Zebra order: even columns, then odd ones, ascending (forward); the exact reverse backward.
+  // Columns of one colour are not neighbours (for nx != 3), so they are solved two at a time.
   const int nx = L.nx;
-  std::vector<int> order;
-  order.reserve(nx);
-  for (int i = 0; i < nx; i += 2) order.push_back(i);
-  const std::size_t evens = order.size();
-  for (int i = 1; i < nx; i += 2) order.push_back(i);
-  if (!forward) std::reverse(order.begin(), order.end());
-  const std::size_t first_colour = forward ? evens : order.size() - evens;
-  auto sweep_colour = [&](std::size_t begin, std::size_t end) {
-    std::size_t n = begin;
+  auto sweep_colour = [&](int first, bool ascending) {
+    const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
+    auto column = [&](int m) { return ascending ? first + 2 * m : first + 2 * (count - 1 - m); };
+    int m = 0;
     if (nx != 3)
-      for (; n + 1 < end; n += 2) solve_columns<2>(L, b, x, {order[n], order[n + 1]});
-    for (; n < end; ++n) solve_columns<1>(L, b, x, {order[n]});
+      for (; m + 1 < count; m += 2) solve_columns<2>(L, b, x, {column(m), column(m + 1)});
+    for (; m < count; ++m) solve_columns<1>(L, b, x, {column(m)});
   };
-  sweep_colour(0, first_colour);
-  sweep_colour(first_colour, order.size());
+  if (forward) {
+    sweep_colour(0, true);
+    sweep_colour(1, true);
+  } else {
+    sweep_colour(1, false);
+    sweep_colour(0, false);
+  }
 }
 
 void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::VectorXd& x) {

@@ -47,6 +47,8 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("dt_max", p.dt_max);
   a("solver_tolerance", p.solver_tolerance);
   a("viscous_tolerance", p.viscous_tolerance);
+  a("viscosity_passes", p.viscosity_passes);
+  a("advection_ab2", p.advection_ab2 ? 1.0 : 0.0);
 }
 
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,

@@ -20,6 +20,7 @@ struct TwodOptions {
   double eta_light = 1e-3;      // light-fluid viscosity [Pa s]
   std::string mixing = "arithmetic";
   double cfl = 0.4;
+  int viscosity_passes = 1;
   double dt_max = 1e-3;         // [s]
   double tolerance = 1e-10;     // relative residual of the linear solves
   double dt_snapshot = 0.0;     // interval of the 2D field snapshots [s]; 0: t_end/10

@@ -35,6 +35,7 @@ struct SweepOptions {
   double tolerance = 1e-6;
   double t_end = 0.0;
   std::string resolution = "coarse";  // 2D grid of --model twod|both
+  int viscosity_passes = 1;           // of --model twod|both
 };
 
 std::vector<double> domain_lengths(const std::string& text) {
@@ -88,6 +89,9 @@ void run_sweep(const SweepOptions& o) {
     spec.depthavg_settings.nx = 256;
     spec.twod_settings.nx = grid_preset(o.resolution).twod_nx;
     spec.twod_settings.nz = grid_preset(o.resolution).twod_nz;
+    spec.twod_settings.viscosity_passes = o.viscosity_passes;
+    // (recorded only when not the default, so sweeps stored before the option still resume)
+    if (o.viscosity_passes != 1) settings["viscosity_passes"] = o.viscosity_passes;
     settings.update({{"resolution", o.resolution},
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
@@ -126,6 +130,10 @@ void add_sweep_command(CLI::App& app) {
   sub->add_option("--resolution", o->resolution,
                   "2D grid of --model twod|both {coarse: 80x32, default: 160x64, fine: 320x128}")
       ->check(one_of({"coarse", "default", "fine"}))
+      ->capture_default_str();
+  sub->add_option("--viscosity-passes", o->viscosity_passes,
+                  "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
+      ->check(CLI::Range(1, 4))
       ->capture_default_str();
   add_depthavg_options(*sub, o->depthavg);
   add_output_options(*sub, o->output);

@@ -62,6 +62,7 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
         {"alpha", m.alpha}, {"twod_nx", double(twod.nx)}, {"twod_nz", double(twod.nz)},
         {"twod_Lz", twod.Lz_over_h0 * k.h0}, {"twod_eta_max", twod.eta_max},
         {"twod_rho_light", twod.rho_light}, {"twod_eta_light", twod.eta_light},
+        {"twod_viscosity_passes", double(twod.viscosity_passes)},
         {"depthavg_nx", double(depthavg.nx)}, {"depthavg_chi", depthavg.chi},
         {"depthavg_rtol", depthavg.rtol}, {"I_zeta", c.base.I_zeta}, {"u_mean", c.base.u_mean},
         {"Fr", c.base.Fr}})

@@ -119,6 +119,7 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
   params.rheology.eta_max = s.eta_max;
   params.rheology.rho_light = s.rho_light;
   params.rheology.eta_light = s.eta_light;
+  params.viscosity_passes = s.viscosity_passes;
 
   ModelRun m;
   m.model = "twod";

@@ -40,6 +40,7 @@ struct TwodSettings {
   double eta_max = 2.0;         // granular viscosity cap [Pa s] (DESIGN.md §8)
   double rho_light = 1.5, eta_light = 1e-3;
   int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
+  int viscosity_passes = 1;     // Picard passes for eta per step (twod/parameters.hpp)
 };
 
 // The named grids of compare and sweep ({coarse, default, fine}): 2D grids with 16, 32 and 64

@@ -135,34 +135,31 @@ void ViscousOperator::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const 
   });
 }
 
-void ViscousOperator::solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  const int nz = g_.nz, first = u_index(i, 0);
+template <class RowVisit>
+void ViscousOperator::solve_line(int first, int length, const Eigen::VectorXd& r,
+                                 Eigen::VectorXd& z, RowVisit&& visit_row_m) const {
+  // Thomas algorithm with the factors of set(); the couplings outside the line take the latest z.
   double y = 0.0;
-  for (int k = 0; k < nz; ++k) {
-    const int row = first + k;
+  for (int m = 0; m < length; ++m) {
+    const int row = first + m;
     double rhs = r[row];
-    visit_u_row(i, k, [&](int col, double value, Entry e) {
+    visit_row_m(m, [&](int col, double value, Entry e) {
       if (e == Entry::Off) rhs -= value * z[col];
     });
     y = (rhs - lower_[row] * y) * inv_m_[row];
     z[row] = y;
   }
-  for (int row = first + nz - 2; row >= first; --row) z[row] -= cp_[row] * z[row + 1];
+  for (int row = first + length - 2; row >= first; --row) z[row] -= cp_[row] * z[row + 1];
+}
+
+void ViscousOperator::solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  solve_line(u_index(i, 0), g_.nz, r, z,
+             [&](int k, auto&& visit) { visit_u_row(i, k, visit); });
 }
 
 void ViscousOperator::solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  const int nz = g_.nz, first = w_index(i, 1);
-  double y = 0.0;
-  for (int k = 1; k < nz; ++k) {
-    const int row = first + k - 1;
-    double rhs = r[row];
-    visit_w_row(i, k, [&](int col, double value, Entry e) {
-      if (e == Entry::Off) rhs -= value * z[col];
-    });
-    y = (rhs - lower_[row] * y) * inv_m_[row];
-    z[row] = y;
-  }
-  for (int row = first + nz - 3; row >= first; --row) z[row] -= cp_[row] * z[row + 1];
+  solve_line(w_index(i, 1), g_.nz - 1, r, z,
+             [&](int m, auto&& visit) { visit_w_row(i, m + 1, visit); });
 }
 
 void ViscousOperator::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {

@@ -42,6 +42,10 @@ class ViscousOperator {
   template <class Visit> void visit_w_row(int i, int k, Visit&& visit) const;
   // each(row, entries) for every row in index order; entries(visit) visits that row.
   template <class Each> void for_each_row(Each&& each) const;
+  // One line of length `length` from row `first`; visit_row_m(m, visit) visits its m-th row.
+  template <class RowVisit>
+  void solve_line(int first, int length, const Eigen::VectorXd& r, Eigen::VectorXd& z,
+                  RowVisit&& visit_row_m) const;
   void solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   void solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 

@@ -15,13 +15,15 @@
 //   bench_twod_linear_check key=value ...
 //     rheology=mui|newton nu=<m^2/s> zeta=28.5 h0=0.004 Lx=0.08 Lz=2 (in h0) nx=160 nz=32
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
-//     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light=1.5 eta_light=1e-3 mixing=arithmetic|harmonic
-//     cfl=0.4 dt_max=1e-3 passes=1 ab2=0 interface_p=cell|extrapolated
+//     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
+//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 interface_p=cell|extrapolated
+//     (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
 //     layer=<m> fn= fs= fq=   theory with eta_n, eta_s, q scaled in a surface layer
 // Prints one JSON object.
 #include <Eigen/Dense>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <fstream>
@@ -138,8 +140,11 @@ int main(int argc, char** argv) {
   params.cfl = a.num("cfl", params.cfl);
   params.dt_max = a.num("dt_max", params.dt_max);
   params.advect_momentum = a.num("advect_momentum", 1) != 0;
-  params.viscosity_passes = int(a.num("passes", 1));
-  params.advection_ab2 = a.num("ab2", 0) != 0;
+  params.viscosity_passes = int(a.num("passes", params.viscosity_passes));
+  params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
+  params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;
+  params.hydrostatic_viscosity_pressure =
+      a.num("hydro_p", params.hydrostatic_viscosity_pressure ? 1 : 0) != 0;
 
   const Material& mat = rh.material;
   const double rho = mat.bulk_density(), g = mat.g;
@@ -216,6 +221,7 @@ int main(int argc, char** argv) {
     flux.push_back(twod::mean_flux(grid, solver.state()));
   };
   sample();
+  const auto wall_start = std::chrono::steady_clock::now();
   std::string status = "completed";
   const int ns = int(std::ceil(t_end / dt_out - 1e-9));
   try {
@@ -284,6 +290,8 @@ int main(int argc, char** argv) {
     out["theory"]["with_drag"] = {(best * u_mean / h0).real(), -(best * u_mean / h0).imag() / k};
   }
   const auto st = solver.statistics();
+  out["wall_seconds"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   out["steps"] = st.steps;
   out["mass_error"] = st.mass_error();
   out["flux_initial"] = flux.front();

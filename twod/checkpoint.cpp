@@ -1,8 +1,8 @@
 // Checkpoint file layout (HDF5): /state/{u,w,p,f} as stored on the staggered grid, and the
 // scalars /state/{t, steps, dt_last, initial_volume, nx, nz, Lx, Lz} as one-element datasets;
 // /surface is the SurfaceSeries recorded so far; /warm_start holds the linear solvers' initial
-// guesses (Solver::warm_start). A restart continues bit-for-bit from here (with the default
-// forward-Euler advection; the Adams-Bashforth option's A^{n-1} is not saved).
+// guesses and the second-order step's memory (A^n, the last step: Solver::warm_start).
+// A restart continues bit-for-bit from here.
 #include "checkpoint.hpp"
 
 #include "diagnostics.hpp"
@@ -37,6 +37,11 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
     out.write("/warm_start/viscous_dt", std::span<const double>(&w.viscous_dt, 1));
   }
   if (!w.pressure_increment.empty()) out.write("/warm_start/pressure_increment", w.pressure_increment);
+  if (!w.advection_u.empty()) {
+    out.write("/warm_start/advection_u", w.advection_u);
+    out.write("/warm_start/advection_w", w.advection_w);
+  }
+  out.write("/warm_start/previous_dt", std::span<const double>(&w.previous_dt, 1));
   out.close();
 }
 
@@ -63,6 +68,15 @@ Checkpoint read_checkpoint(const std::string& path) {
   }
   if (h5_has(path, "/warm_start/pressure_increment"))
     c.warm_start.pressure_increment = h5_read_doubles(path, "/warm_start/pressure_increment");
+  auto optional = [&](const char* name, std::vector<double>& v) {
+    if (h5_has(path, std::string("/warm_start/") + name))
+      v = h5_read_doubles(path, std::string("/warm_start/") + name);
+  };
+  optional("advection_u", c.warm_start.advection_u);
+  optional("advection_w", c.warm_start.advection_w);
+  std::vector<double> dt;
+  optional("previous_dt", dt);
+  if (!dt.empty()) c.warm_start.previous_dt = dt.at(0);
   return c;
 }
 

@@ -7,7 +7,10 @@
 //   f      granular volume fraction (VOF colour function), 1 in grains, 0 in the light fluid
 //
 //   rho_u, rho_w   face densities rho = f rho_* phi + (1 - f) rho_l, f averaged to the face
-//   eta_c, eta_n   viscosities at cell centres and corners [Pa s] (mixing rule in properties)
+//   eta_c, eta_n   viscosities at cell centres and corners [Pa s] (mixing rule in properties):
+//                  the secant, tau = 2 eta D
+//   eta_c_tangent, eta_n_tangent   the same, tangent to tau(D) along the component each one
+//                  multiplies (normal strain in cells, shear at corners); <= eta
 #pragma once
 
 #include <vector>
@@ -27,11 +30,12 @@ struct Fields {
 struct Properties {
   std::vector<double> rho_u, rho_w;  // face densities (rho_w has nz + 1 rows)
   std::vector<double> eta_c, eta_n;  // cell-centre and corner viscosities
+  std::vector<double> eta_c_tangent, eta_n_tangent;
   std::vector<double> I_c;           // inertial number (2.8) at cell centres (diagnostic)
 
   explicit Properties(const Grid& g = Grid())
       : rho_u(g.cells()), rho_w(g.w_faces()), eta_c(g.cells()), eta_n(g.corners()),
-        I_c(g.cells()) {}
+        eta_c_tangent(g.cells()), eta_n_tangent(g.corners()), I_c(g.cells()) {}
 };
 
 }  // namespace granbench::twod

@@ -49,6 +49,12 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("viscous_tolerance", p.viscous_tolerance);
   a("viscosity_passes", p.viscosity_passes);
   a("advection_ab2", p.advection_ab2 ? 1.0 : 0.0);
+  a("viscosity_tangent", p.viscosity_tangent ? 1.0 : 0.0);
+  a("hydrostatic_viscosity_pressure", p.hydrostatic_viscosity_pressure ? 1.0 : 0.0);
+  out.attribute(group, "interface_pressure",
+                std::string(r.interface_pressure == InterfacePressure::Extrapolated
+                                ? "extrapolated"
+                                : "cell-average"));
 }
 
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,

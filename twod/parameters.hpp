@@ -22,8 +22,7 @@ namespace granbench::twod {
 enum class ViscosityMixing { Harmonic, Arithmetic };
 
 // Pressure at which the granular viscosity of interface cells and corners is evaluated:
-//   CellAverage   the cell-centre p (corners: mean of the four cells), as everywhere else
-//                 (default). At a corner on a flat surface lying on a cell face this p is
+//   CellAverage   the cell-centre p (corners: mean of the four cells), as everywhere else. At a corner on a flat surface lying on a cell face this p is
 //                 rho g cos(zeta) dz/4 > 0 while the weight above it is ~0, so
 //                 mu(I) p = tau needs I -> 0: eta hits eta_max and the corner is a plug that
 //                 locks the top half-cell of grains to the light fluid (docs/twod-validation.md).
@@ -33,8 +32,9 @@ enum class ViscosityMixing { Harmonic, Arithmetic };
 //                 centroid of the cell's granular part; and interface corners are granular
 //                 (unmixed eta_g) below h and light fluid above it. Assumes a surface that is a
 //                 graph h(x). Removes the plug; the steady flux no longer depends on where the
-//                 surface sits in its cell. Not the default: it lowers the max-norm order of the
-//                 steady Bagnold test (top granular row) from > 1.4 to ~1.
+//                 surface sits in its cell. The default: the plug of CellAverage costs 5-8 % of
+//                 the §7 growth rate. It lowers the max-norm order of the steady Bagnold test
+//                 (top granular row) from > 1.4 to ~1; the L1 order stays ~2.
 enum class InterfacePressure { CellAverage, Extrapolated };
 
 // Preconditioner of the conjugate-gradient solves (spd_solver.hpp, pcg.hpp):
@@ -53,10 +53,15 @@ struct Rheology {
   double eta_max = 2.0;        // cap on the granular viscosity [Pa s]
   double eta_min = 1e-3;       // floor on the granular viscosity [Pa s]
   double D_min = 1e-6;         // floor on |D| [1/s]
-  double rho_light = 1.5;      // light-fluid density [kg m^-3]
-  double eta_light = 1e-3;     // light-fluid viscosity [Pa s]
+  // The light fluid stands in for the stress-free surface of the theory (DESIGN.md §7): the
+  // lighter and less viscous it is, the closer the surface is to stress free. At 1.5 kg m^-3
+  // and 1e-3 Pa s (air-like) its drag on the surface cost ~20 % of the §7 growth rate, because
+  // 1e-3 Pa s is the granular tangent viscosity one cell below the surface at 32 cells per h0
+  // (docs/twod-validation.md, light-fluid sensitivity).
+  double rho_light = 0.15;     // light-fluid density [kg m^-3]
+  double eta_light = 1e-4;     // light-fluid viscosity [Pa s]
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
-  InterfacePressure interface_pressure = InterfacePressure::CellAverage;
+  InterfacePressure interface_pressure = InterfacePressure::Extrapolated;
   // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =
   // newtonian_eta when > 0.
   double newtonian_eta = 0.0;
@@ -74,14 +79,24 @@ struct SolverParams {
   LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
   LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;
   double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]
-  // Passes of predictor + projection per step. 1: eta from u^n, p^n (lagged one step). n > 1:
-  // each further pass recomputes eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta
-  // is taken at the new time level to the accuracy of the iteration.
+  // The stress at the new level without a second solve (solver.cpp, viscous_step.cpp):
+  //   viscosity_tangent: tau^{n+1} = tau(D^n, p*) + C^n : (D^{n+1} - D^n) with the consistent
+  //     tangent C of the strain-rate dependence (false: eta from u^n, lagged one step);
+  //   hydrostatic_viscosity_pressure: p* = p^n plus the hydrostatic change of this step's
+  //     surface move (viscosity_pressure.cpp; false: p* = p^n, lagged one step).
+  // Each lag is a first-order time error of the growth rate (docs/twod-validation.md).
+  bool viscosity_tangent = true;
+  bool hydrostatic_viscosity_pressure = true;
+  // Passes of predictor + projection per step. 1: one solve. n > 1: each further pass recomputes
+  // eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta is taken at the new time level
+  // to the accuracy of the iteration (about n times the cost).
   int viscosity_passes = 1;
   bool advect_momentum = true;
-  // Time integration of the advective term: false = forward Euler (u^n . grad u^n), true =
-  // second-order Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1}.
-  bool advection_ab2 = false;
+  // Time integration of the advective term: true (default) = second-order Adams-Bashforth,
+  // (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps actually taken;
+  // false = forward Euler (u^n . grad u^n), whose anti-diffusion (U^2 dt/2) d2/dx2 makes the
+  // weakly damped surface-layer shear modes (lambda ~ 6 mm) grow (docs/twod-validation.md).
+  bool advection_ab2 = true;
   bool advect_interface = true;
 };
 

@@ -19,6 +19,14 @@
 // Mixing in interface cells (Rheology::mixing, see parameters.hpp): arithmetic
 // eta = f eta_g + (1-f) eta_l (default), or harmonic 1/eta = f/eta_g + (1-f)/eta_l (Gerris' main
 // runs). f at a corner is the mean of its four cells.
+// Tangent viscosities. The mu(I) stress tau = 2 eta(|D|, p) D has the tangent (consistent)
+// modulus C = 2 eta [1 - (1 - Gamma/mu) D (x) D / (D:D)], Gamma = I mu'(I): along D it is the
+// tangent viscosity eta Gamma/mu (~10 times smaller than eta in the §7 flow), across D the
+// secant eta. The viscous step keeps the diagonal of C in its symmetric stencil: for the shear
+// strain at a corner and the normal strain in a cell,
+//   eta_n_tangent = eta_n [1 - (1 - Gamma/mu) D_xz^2 / |D|^2],
+//   eta_c_tangent = eta_c [1 - (1 - Gamma/mu) (D_xx^2 + D_zz^2) / (2 |D|^2)],
+// the two weights adding up to 1 for a divergence-free D. Both are >= eta Gamma/mu > 0.
 // Rheology::interface_pressure = Extrapolated (parameters.hpp) instead evaluates eta_g in
 // interface cells and at interface corners with the overburden pressure interpolated to the
 // surface height of the columns, and treats an interface corner as granular below that height
@@ -32,7 +40,8 @@
 namespace granbench::twod {
 
 ViscosityModel::ViscosityModel(const Rheology& r)
-    : r_(r), curve_(r.curve, r.material, r.h0_for_curve),
+    : r_(r),
+      curve_(r.curve, r.material, r.h0_for_curve),
       d_over_sqrt_rho_(2.0 * r.material.d * std::sqrt(r.material.rho_star)) {}
 
 double ViscosityModel::inertial_number(double p, double D) const {
@@ -46,6 +55,23 @@ double ViscosityModel::granular(double p, double D) const {
   const double Df = std::max(D, r_.D_min);
   const double eta = curve_.mu(inertial_number(p, Df)) * p / (2.0 * Df);  // (2.11)
   return std::clamp(eta, r_.eta_min, r_.eta_max);
+}
+
+double ViscosityModel::tangent_ratio(double p, double D) const {
+  if (r_.newtonian_eta > 0.0 || p <= 0.0 || D <= r_.D_min) return 1.0;
+  const double I = inertial_number(p, D);
+  const double mu = curve_.mu(I);
+  const double eta = mu * p / (2.0 * D);                   // (2.11)
+  if (eta <= r_.eta_min || eta >= r_.eta_max) return 1.0;  // eta does not follow |D| there
+  return std::clamp(I * curve_.dmu_dI(I) / mu, 0.0, 1.0);  // Gamma / mu
+}
+
+double ViscosityModel::mix_tangent(double f, double eta_g, double eta_gt) const {
+  if (f >= 1.0) return eta_gt;
+  if (f <= 0.0) return r_.eta_light;
+  if (r_.mixing == ViscosityMixing::Arithmetic) return f * eta_gt + (1.0 - f) * r_.eta_light;
+  const double eta = mix(f, eta_g);  // d eta/d eta_g = f eta^2 / eta_g^2 of the harmonic mean
+  return eta + f * eta * eta / (eta_g * eta_g) * (eta_gt - eta_g);
 }
 
 double ViscosityModel::mix(double f, double eta_g) const {
@@ -71,8 +97,28 @@ void update_densities(const Grid& g, const std::vector<double>& f, const Rheolog
 
 void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
                       Properties& props) {
+  update_viscosity(g, s, s.p, model, props);
+}
+
+void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>& p_eta,
+                      const ViscosityModel& model, Properties& props) {
   const int nx = g.nx, nz = g.nz;
-  const auto &u = s.u, &w = s.w, &p = s.p, &f = s.f;
+  const auto &u = s.u, &w = s.w, &p = p_eta, &f = s.f;
+  const double eta_l = model.rheology().eta_light;
+  // eta and its tangent for a mixture of fraction fr at pressure pr, the component having the
+  // share `weight` of |D|^2
+  auto set_eta = [&](double fr, double pr, double D, double weight, double& eta, double& eta_t) {
+    if (fr <= 0.0) {  // mu(I) not needed
+      eta = eta_t = eta_l;
+      return;
+    }
+    const double eta_g = model.granular(pr, D);
+    const double ratio = model.tangent_ratio(pr, D);
+    const double eta_gt = eta_g * (1.0 - (1.0 - ratio) * weight);
+    eta = model.mix(fr, eta_g);
+    eta_t = model.mix_tangent(fr, eta_g, eta_gt);
+  };
+  auto share = [](double part, double D2) { return D2 > 0.0 ? std::min(part / D2, 1.0) : 0.0; };
   // gamma = du/dz + dw/dx at the corners, with the bed and top conditions.
   std::vector<double> gam(g.corners());
   for (int k = 0; k <= nz; ++k)
@@ -124,12 +170,12 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
       Dzz[c] = (w[g.at(i, k + 1)] - w[c]) / g.dz;
       const double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
                                   gam[g.at(i + 1, k + 1)]);
-      const double D = std::sqrt(0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]) + Dxz * Dxz);
+      const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);
+      const double D = std::sqrt(normal2 + Dxz * Dxz);
       double pc = p[c];
       if (extrapolate && f[c] < 1.0 && f[c] > 0.0)  // at the centroid of the granular part
         pc = p_granular(i, k * g.dz + 0.5 * std::min(f[c] * g.dz, g.dz), false);
-      props.eta_c[c] = f[c] > 0.0 ? model.mix(f[c], model.granular(pc, D))
-                                  : model.rheology().eta_light;  // mu(I) not needed
+      set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
       props.I_c[c] = model.inertial_number(p[c], D);
     }
   for (int k = 0; k <= nz; ++k) {
@@ -140,6 +186,8 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
       const double dzz = 0.25 * (Dzz[a] + Dzz[b] + Dzz[c] + Dzz[d]);
       const double dxz = 0.5 * gam[g.at(i, k)];
       const double D = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
+      const double shear_share = share(dxz * dxz, D * D);
+      const std::size_t n = g.at(i, k);
       double pn;
       if (k == 0)  // linear extrapolation of the two lowest rows to the bed
         pn = 0.5 * (1.5 * (p[a] + p[b]) - 0.5 * (p[g.at(i - 1, 1)] + p[g.at(i, 1)]));
@@ -152,12 +200,11 @@ void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& mode
         // an interface corner is granular when it lies below the surface of its two columns,
         // with the overburden pressure there; light fluid otherwise (no mixing)
         const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]);
-        props.eta_n[g.at(i, k)] = k * g.dz < h ? model.granular(p_granular(i, k * g.dz, true), D)
-                                               : model.rheology().eta_light;
+        set_eta(k * g.dz < h ? 1.0 : 0.0, p_granular(i, k * g.dz, true), D, shear_share,
+                props.eta_n[n], props.eta_n_tangent[n]);
         continue;
       }
-      props.eta_n[g.at(i, k)] =
-          fn > 0.0 ? model.mix(fn, model.granular(pn, D)) : model.rheology().eta_light;
+      set_eta(fn, pn, D, shear_share, props.eta_n[n], props.eta_n_tangent[n]);
     }
   }
 }

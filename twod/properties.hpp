@@ -16,8 +16,14 @@ class ViscosityModel {
   double inertial_number(double p, double D) const;
   // Granular viscosity (2.11) with p clipped at 0, |D| floored and eta in [eta_min, eta_max].
   double granular(double p, double D) const;
+  // Its tangent ratio Gamma/mu (Gamma = I mu'(I)): d(eta |D|)/d|D| = eta Gamma/mu, the stiffness of
+  // the stress against a change of |D| along D, relative to the secant eta. 1 where eta does not
+  // depend on |D| (capped, floored, |D| below its floor, p <= 0, Newtonian).
+  double tangent_ratio(double p, double D) const;
   // The mixture viscosity of a cell holding granular fraction f.
   double mix(double f, double eta_g) const;
+  // The tangent of the mixture viscosity when eta_g has the tangent eta_gt.
+  double mix_tangent(double f, double eta_g, double eta_gt) const;
   const MuCurve& curve() const { return curve_; }
   const Rheology& rheology() const { return r_; }
 
@@ -30,7 +36,10 @@ class ViscosityModel {
 // rho at the u- and w-faces from f (arithmetic average of the adjacent cells).
 void update_densities(const Grid& g, const std::vector<double>& f, const Rheology& r,
                       Properties& props);
-// eta at cell centres and corners (and I at centres) from u, w, p and f.
+// eta at cell centres and corners (and I at centres) from u, w, f and the pressure p_eta (s.p in
+// the first form), with the tangent viscosities of the viscous step (properties.cpp).
+void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>& p_eta,
+                      const ViscosityModel& model, Properties& props);
 void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
                       Properties& props);
 

@@ -8,15 +8,27 @@
 // interface carried by the volume fraction f. Fractional step per time level n -> n+1:
 //
 //   f^{n+1}          = VOF(f^n, u^n, dt)                   split PLIC, Weymouth-Yue
-//   rho^{n+1}, eta   = properties(f^{n+1}, u^n, p^n)       eta lagged one step
-//   u*               : rho^{n+1}(u* - u^n)/dt = div(2 eta D(u*)) - grad p^n
-//                                               + rho^{n+1}(g - u^n . grad u^n)
+//   rho^{n+1}, eta   = properties(f^{n+1}, u^n, p*)        p* = p^n + hydrostatic change h^n ->
+//   h^{n+1} u*               : rho^{n+1}(u* - u^n)/dt = div(tau^{n+1}) - grad p^n
+//                                               + rho^{n+1}(g - A^{n+1/2})
 //   dp               : div(grad dp / rho^{n+1}) = div u* / dt
 //   u^{n+1} = u* - dt grad dp / rho^{n+1},   p^{n+1} = p^n + dp
 //
-// Options (parameters.hpp, off by default): advection_ab2 replaces u^n . grad u^n by the
-// Adams-Bashforth extrapolation (1 + r/2) A^n - (r/2) A^{n-1}; viscosity_passes > 1 repeats the
-// predictor and projection with eta from the provisional u^{n+1}, p^{n+1} (Picard).
+// with the advection A = u . grad u by second-order Adams-Bashforth, A^{n+1/2} = (1 + r/2) A^n
+// - (r/2) A^{n-1}, r = dt_n/dt_{n-1} (the steps actually taken), the stress linearised about
+// u^n with its consistent tangent, tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n) (viscous_step.cpp),
+// and p* following the surface to the new level (viscosity_pressure.cpp). These remove a
+// first-order time error that the 2D growth rate is very sensitive to: the surface
+// mode's growth is ~1 % of its frequency, and a phase lag of omega dt in the pressure-dependent
+// friction alone cost 20 % of it at cfl 0.4 (docs/twod-validation.md).
+//
+// Options (parameters.hpp): forward-Euler advection (advection_ab2 = false); eta lagged at u^n
+// (viscosity_tangent = false) and p^n (hydrostatic_viscosity_pressure = false); viscosity_passes >
+// 1 repeats the predictor and projection with eta from the provisional u^{n+1}, p^{n+1} (Picard).
+//
+// Steps are CFL-limited (time_step.cpp). To land on a requested time the solver never takes a
+// sliver: when the remainder is between one and two steps it takes two equal halves. (The
+// projection divides by dt, so the linear solvers' residuals in a 1e-8 s step are pressure kicks.)
 //
 // After each step the state is checked: a NaN or a speed above velocity_limit stops the run
 // with a DivergenceError naming the time, the place and the quantity.
@@ -28,12 +40,18 @@
 #include "diagnostics.hpp"
 #include "momentum_advection.hpp"
 #include "time_step.hpp"
+#include "viscosity_pressure.hpp"
 
 namespace granbench::twod {
 
 Solver::Solver(const Grid& g, const SolverParams& params, Fields initial)
-    : g_(g), params_(params), model_(params.rheology), s_(std::move(initial)), props_(g),
-      viscous_(g, params), projection_(g, params) {
+    : g_(g),
+      params_(params),
+      model_(params.rheology),
+      s_(std::move(initial)),
+      props_(g),
+      viscous_(g, params),
+      projection_(g, params) {
   stats_.initial_volume = granular_volume(g_, s_.f);
   update_densities(g_, s_.f, params_.rheology, props_);
   update_viscosity(g_, s_, model_, props_);
@@ -48,37 +66,58 @@ void Solver::resume(long steps, double dt_last, double initial_volume) {
 WarmStart Solver::warm_start() const {
   const Eigen::VectorXd& v = viscous_.increment();
   const Eigen::VectorXd& p = projection_.warm_start();
-  return {std::vector<double>(v.data(), v.data() + v.size()), viscous_.increment_dt(),
-          std::vector<double>(p.data(), p.data() + p.size())};
+  WarmStart w;
+  w.viscous_increment.assign(v.data(), v.data() + v.size());
+  w.viscous_dt = viscous_.increment_dt();
+  w.pressure_increment.assign(p.data(), p.data() + p.size());
+  w.advection_u = adv_u_old_;
+  w.advection_w = adv_w_old_;
+  w.previous_dt = dt_previous_;
+  return w;
 }
 
 void Solver::set_warm_start(const WarmStart& w) {
-  viscous_.set_increment(Eigen::Map<const Eigen::VectorXd>(w.viscous_increment.data(),
-                                                           Eigen::Index(w.viscous_increment.size())),
+  viscous_.set_increment(Eigen::Map<const Eigen::VectorXd>(
+                             w.viscous_increment.data(), Eigen::Index(w.viscous_increment.size())),
                          w.viscous_dt);
   projection_.set_warm_start(Eigen::Map<const Eigen::VectorXd>(
       w.pressure_increment.data(), Eigen::Index(w.pressure_increment.size())));
+  adv_u_old_ = w.advection_u;
+  adv_w_old_ = w.advection_w;
+  dt_previous_ = w.previous_dt;
 }
 
 double Solver::step(double dt_limit) {
-  double dt = choose_time_step(g_, s_, params_, stats_.dt_last);
-  if (stats_.dt_last <= 0.0) dt = std::min(dt, params_.dt_initial);
-  const bool last = dt_limit <= dt * (1.0 + 1e-9);
-  if (last) dt = dt_limit;
+  double dt_full = choose_time_step(g_, s_, params_, stats_.dt_last);
+  if (stats_.dt_last <= 0.0) dt_full = std::min(dt_full, params_.dt_initial);
+  double dt = dt_full;
+  if (dt_limit <= dt_full * (1.0 + 1e-9))
+    dt = dt_limit;
+  else if (dt_limit < 2.0 * dt_full)
+    dt = 0.5 * dt_limit;  // no sliver before dt_limit: two equal steps
+  const bool shortened = dt < dt_full;
+  // r = dt_n / dt_{n-1} of the steps actually taken (Adams-Bashforth)
+  const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;
   // 1. interface
+  if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
   if (params_.advect_interface)
     advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
-  // 2. properties at the new level (eta from u^n, p^n)
+  // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
+  //    surface's move (viscosity_pressure.cpp)
   update_densities(g_, s_.f, params_.rheology, props_);
-  update_viscosity(g_, s_, model_, props_);
+  if (params_.hydrostatic_viscosity_pressure)
+    update_viscosity(g_, s_,
+                     viscosity_pressure(g_, params_, s_.p, h_before_, surface_heights(g_, s_.f)),
+                     model_, props_);
+  else
+    update_viscosity(g_, s_, model_, props_);
   // 3. momentum predictor
   if (params_.advect_momentum) {
     momentum_advection(g_, s_, adv_u_, adv_w_);
     if (params_.advection_ab2) {
-      const bool have_old = !adv_u_old_.empty() && stats_.dt_last > 0.0;
+      const bool have_old = !adv_u_old_.empty() && r > 0.0;
       adv_u_old_.swap(adv_u_);  // adv_u_old_ = A^n, adv_u_ = A^{n-1}
       adv_w_old_.swap(adv_w_);
-      const double r = have_old ? dt / stats_.dt_last : 0.0;
       if (!have_old) {
         adv_u_ = adv_u_old_;
         adv_w_ = adv_w_old_;
@@ -108,12 +147,13 @@ double Solver::step(double dt_limit) {
     s_.w.swap(next.w);
     s_.p.swap(next.p);
   }
+  dt_previous_ = dt;
 
   s_.t += dt;
   ++stats_.steps;
   if (stats_.steps == 1 || dt < stats_.dt_min) stats_.dt_min = dt;
   if (dt > stats_.dt_max) stats_.dt_max = dt;
-  if (!last) stats_.dt_last = dt;  // a shortened final step does not throttle the next one
+  if (!shortened) stats_.dt_last = dt;  // a shortened step does not throttle the next one
   check_health();
   return dt;
 }
@@ -146,7 +186,8 @@ void Solver::check_health() const {
     for (int i = 0; i < g_.nx; ++i) {
       const std::size_t c = g_.at(i, k);
       const double u = s_.u[c], w = s_.w[g_.at(i, k + 1)];
-      if (!std::isfinite(u) || std::abs(u) > params_.velocity_limit) fail("u", u, i * g_.dx, g_.zc(k));
+      if (!std::isfinite(u) || std::abs(u) > params_.velocity_limit)
+        fail("u", u, i * g_.dx, g_.zc(k));
       if (!std::isfinite(w) || std::abs(w) > params_.velocity_limit)
         fail("w", w, g_.xc(i), (k + 1) * g_.dz);
       if (!std::isfinite(s_.p[c])) fail("p", s_.p[c], g_.xc(i), g_.zc(k));

@@ -33,6 +33,9 @@ struct WarmStart {
   std::vector<double> viscous_increment;  // u* - u^n of the last predictor (solver unknowns)
   double viscous_dt = 0.0;                // the step of that predictor
   std::vector<double> pressure_increment; // the last projection's delta p
+  // The second-order step's memory: A^n (Adams-Bashforth) and the last step taken.
+  std::vector<double> advection_u, advection_w;
+  double previous_dt = 0.0;
 };
 
 struct RunStatistics {
@@ -83,6 +86,8 @@ class Solver {
   Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
   std::vector<double> adv_u_old_, adv_w_old_;  // A^n kept for the next step (advection_ab2)
+  std::vector<double> h_before_;               // column heights before the VOF step
+  double dt_previous_ = 0.0;                   // the last step taken (shortened or not)
   RunStatistics stats_;
 };
 

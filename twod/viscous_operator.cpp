@@ -1,13 +1,14 @@
 // Rows of the viscous matrix of viscous_step.cpp, written out per unknown. The matrix is the
 // sum of the mass terms rho V/dt and of K a a^T over the stress terms (a: difference stencil):
 //
-//   cell (i, k)     K = 2 eta_c V:  D_xx = (u_{i+1,k} - u_{i,k})/dx,  D_zz = (w_{i,k+1} - w_{i,k})/dz
-//   corner (i, k)   K = eta_n V:    gamma = (u_{i,k} - u_{i,k-1})/dz + (w_{i,k} - w_{i-1,k})/dx
-//   bed corner      K = eta_n V/2:  gamma = 2 u_{i,0}/dz (no slip, ghost u = -u)
+//   cell (i, k)     K = 2 eta_c V:  D_xx = (u_{i+1,k} - u_{i,k})/dx,  D_zz = (w_{i,k+1} -
+//   w_{i,k})/dz corner (i, k)   K = eta_n V:    gamma = (u_{i,k} - u_{i,k-1})/dz + (w_{i,k} -
+//   w_{i-1,k})/dx bed corner      K = eta_n V/2:  gamma = 2 u_{i,0}/dz (no slip, ghost u = -u)
 //
 // with w = 0 at the bed and the top w and top corners lagged (right-hand side). Row by row:
 //
-//   u(i,k): mu + (Kc_{i,k} + Kc_{i-1,k})/dx^2 + (Kn_{i,k} [2 Kn_{i,0} at the bed] + Kn_{i,k+1})/dz^2
+//   u(i,k): mu + (Kc_{i,k} + Kc_{i-1,k})/dx^2 + (Kn_{i,k} [2 Kn_{i,0} at the bed] +
+//   Kn_{i,k+1})/dz^2
 //           on the diagonal; -Kc/dx^2 to u(i+-1,k); -Kn/dz^2 to u(i,k-+1) (the line);
 //           +-Kn/(dx dz) to the four w's around it (corners k and k+1, interior only)
 //   w(i,k): mw + (Kc_{i,k} + Kc_{i,k-1})/dz^2 + (Kn_{i,k} + Kn_{i+1,k})/dx^2 on the diagonal;
@@ -19,15 +20,23 @@
 // assembled matrix and the symmetry.
 #include "viscous_operator.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace granbench::twod {
 
 ViscousOperator::ViscousOperator(const Grid& g)
-    : g_(g), nu_(g.nx * g.nz), ixx_(1.0 / (g.dx * g.dx)), izz_(1.0 / (g.dz * g.dz)),
-      ixz_(1.0 / (g.dx * g.dz)), mass_u_(g.cells()), mass_w_(g.cells()), kc_(g.cells()),
+    : g_(g),
+      nu_(g.nx * g.nz),
+      ixx_(1.0 / (g.dx * g.dx)),
+      izz_(1.0 / (g.dz * g.dz)),
+      ixz_(1.0 / (g.dx * g.dz)),
+      mass_u_(g.cells()),
+      mass_w_(g.cells()),
+      kc_(g.cells()),
       kn_(g.corners()) {
-  if (g.nx < 3 || g.nz < 2) throw std::invalid_argument("ViscousOperator: grid needs nx >= 3, nz >= 2");
+  if (g.nx < 3 || g.nz < 2)
+    throw std::invalid_argument("ViscousOperator: grid needs nx >= 3, nz >= 2");
   lower_.resize(size());
   inv_m_.resize(size());
   cp_.resize(size());
@@ -91,19 +100,35 @@ void ViscousOperator::for_each_row(Each&& each) const {
 }
 
 void ViscousOperator::set(const Properties& props, double dt) {
-  // Column by column (i nz + k for cells and u, i (nz - 1) + k - 1 for interior w, i (nz + 1) + k
-  // for corners), so that the loops along a line read contiguous memory.
+  set(props, props.eta_c, props.eta_n, dt);
+}
+
+void ViscousOperator::set_stress(const std::vector<double>& eta_c,
+                                 const std::vector<double>& eta_n) {
+  // Column by column (i nz + k for cells and u, i (nz + 1) + k for corners), so that the loops
+  // along a line read contiguous memory.
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
   for (int i = 0; i < nx; ++i)
     for (int k = 0; k <= nz; ++k) {
       const std::size_t c = g_.at(i, k);
-      if (k < nz) {
-        mass_u_[i * nz + k] = props.rho_u[c] * V / dt;
-        kc_[i * nz + k] = 2.0 * props.eta_c[c] * V;
-      }
-      if (k > 0 && k < nz) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V / dt;
-      kn_[i * (nz + 1) + k] = props.eta_n[c] * V;
+      if (k < nz) kc_[i * nz + k] = 2.0 * eta_c[c] * V;
+      kn_[i * (nz + 1) + k] = eta_n[c] * V;
+    }
+  std::fill(mass_u_.begin(), mass_u_.end(), 0.0);
+  std::fill(mass_w_.begin(), mass_w_.end(), 0.0);
+}
+
+void ViscousOperator::set(const Properties& props, const std::vector<double>& eta_c,
+                          const std::vector<double>& eta_n, double dt) {
+  set_stress(eta_c, eta_n);
+  const double V = g_.cell_volume();
+  const int nx = g_.nx, nz = g_.nz;
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k < nz; ++k) {
+      const std::size_t c = g_.at(i, k);
+      mass_u_[i * nz + k] = props.rho_u[c] * V / dt;
+      if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V / dt;
     }
   // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k.
   for_each_row([&](int row, auto&& entries) {
@@ -153,8 +178,7 @@ void ViscousOperator::solve_line(int first, int length, const Eigen::VectorXd& r
 }
 
 void ViscousOperator::solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  solve_line(u_index(i, 0), g_.nz, r, z,
-             [&](int k, auto&& visit) { visit_u_row(i, k, visit); });
+  solve_line(u_index(i, 0), g_.nz, r, z, [&](int k, auto&& visit) { visit_u_row(i, k, visit); });
 }
 
 void ViscousOperator::solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const {

@@ -24,8 +24,13 @@ class ViscousOperator {
 
   // Coefficients for one step: the face masses rho V / dt and the stress weights 2 eta_c V
   // (cells) and eta_n V (corners) from the properties at the new level; then the Thomas factors
-  // of the lines.
+  // of the lines. The first form takes props.eta_c, props.eta_n.
   void set(const Properties& props, double dt);
+  void set(const Properties& props, const std::vector<double>& eta_c,
+           const std::vector<double>& eta_n, double dt);
+  // The stress weights alone (no mass terms, no line factors): apply() is then the stress part
+  // of the operator with these viscosities, for a stress taken explicitly.
+  void set_stress(const std::vector<double>& eta_c, const std::vector<double>& eta_n);
   // y = A x.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   // z = M^{-1} r: one sweep over the lines (u-lines, then w-lines, columns ascending) and one

@@ -3,7 +3,15 @@
 //   rho^{n+1} (u* - u^n)/dt = div(2 eta D(u*)) - grad p^n + rho^{n+1} (g - (u^n . grad) u^n),
 //   g = (g sin zeta, -g cos zeta),
 //
-// eta from the previous step (properties.cpp). Because eta ranges over ~1e8 between grains and
+// with the stress linearised about u^n (SolverParams::viscosity_tangent, the default):
+//
+//   tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n)  ~  2 eta_t D* + 2 (eta - eta_t) D^n,
+//
+// eta the secant and eta_t the tangent viscosities at the new level (properties.cpp), p* the
+// pressure extrapolated to it (solver.cpp). For a perturbation of a steady flow this is the
+// linearised stress at the new level, so the step has no first-order lag; the matrix keeps eta_t,
+// and S(eta - eta_t) u^n moves to the right-hand side. Without the tangent, eta is the secant
+// from u^n (lagged one step). Because eta ranges over ~1e8 between grains and
 // light fluid, the stress is fully implicit and u, w are coupled through tau_xz. Written on the
 // MAC control volumes (volume V = dx dz), the stress work is a sum of squares,
 //   cells:    2 eta_c V (D_xx^2 + D_zz^2),  D_xx = (u_{i+1} - u_i)/dx, D_zz = (w_{k+1} - w_k)/dz,
@@ -26,17 +34,26 @@
 namespace granbench::twod {
 
 ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
-    : g_(g), gx_(params.rheology.material.g * std::sin(params.zeta)),
-      gz_(-params.rheology.material.g * std::cos(params.zeta)), kind_(params.viscous_solver),
-      tol_(params.viscous_tolerance), op_(g), solver_(params.viscous_solver, params.viscous_tolerance) {}
+    : g_(g),
+      gx_(params.rheology.material.g * std::sin(params.zeta)),
+      gz_(-params.rheology.material.g * std::cos(params.zeta)),
+      kind_(params.viscous_solver),
+      tol_(params.viscous_tolerance),
+      tangent_(params.viscosity_tangent),
+      op_(g),
+      explicit_stress_(g),
+      solver_(params.viscous_solver, params.viscous_tolerance) {}
 
-int ViscousStep::predict(const Fields& s, const Properties& props,
-                         const std::vector<double>& adv_u, const std::vector<double>& adv_w,
-                         double dt, std::vector<double>& u_star, std::vector<double>& w_star) {
+int ViscousStep::predict(const Fields& s, const Properties& props, const std::vector<double>& adv_u,
+                         const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
+                         std::vector<double>& w_star) {
   const Grid& g = g_;
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
-  op_.set(props, dt);
+  if (tangent_)
+    op_.set(props, props.eta_c_tangent, props.eta_n_tangent, dt);
+  else
+    op_.set(props, dt);
   // Initial guess u^n + (dt/dt_prev)(u* - u^n)_prev: the predictor increment changes slowly
   // from step to step, and starting from it halves the iterations against starting from u^n.
   const bool have_increment = increment_.size() == op_.size() && dt_previous_ > 0.0;
@@ -60,6 +77,23 @@ int ViscousStep::predict(const Fields& s, const Properties& props,
               g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
     }
+  // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n.
+  if (tangent_) {
+    x_old_.resize(op_.size());
+    for (int k = 0; k < nz; ++k)
+      for (int i = 0; i < nx; ++i) x_old_[op_.u_index(i, k)] = s.u[g.at(i, k)];
+    for (int k = 1; k < nz; ++k)
+      for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = s.w[g.at(i, k)];
+    lagged_c_.resize(props.eta_c.size());
+    lagged_n_.resize(props.eta_n.size());
+    for (std::size_t c = 0; c < lagged_c_.size(); ++c)
+      lagged_c_[c] = props.eta_c[c] - props.eta_c_tangent[c];
+    for (std::size_t c = 0; c < lagged_n_.size(); ++c)
+      lagged_n_[c] = props.eta_n[c] - props.eta_n_tangent[c];
+    explicit_stress_.set_stress(lagged_c_, lagged_n_);
+    explicit_stress_.apply(x_old_, y_);
+    b_ -= y_;
+  }
   // Known values at the top: w^n on the top face in the top cell's D_zz, and the top corner's
   // tau_xz = eta (dw/dx) (du/dz = 0 there).
   const double ix = 1.0 / g.dx, iz = 1.0 / g.dz;
@@ -75,7 +109,8 @@ int ViscousStep::predict(const Fields& s, const Properties& props,
     iterations = pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
                      [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { op_.precondition(r, z); },
                      b_, x_, tol_, 2000);
-    if (iterations < 0) throw std::runtime_error("viscous step: conjugate gradients did not converge");
+    if (iterations < 0)
+      throw std::runtime_error("viscous step: conjugate gradients did not converge");
   } else {
     op_.assemble(A_);
     iterations = solver_.solve(A_.matrix(), b_, x_);

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "parameters.hpp"
 #include "run_model.hpp"
 
 namespace granbench::cli {
@@ -16,8 +17,8 @@ struct TwodOptions {
   double eta_max = 2.0;         // granular viscosity cap [Pa s]
   double eta_min = 1e-3;        // granular viscosity floor [Pa s]
   double D_min = 1e-6;          // floor on |D| [1/s]
-  double rho_light = 1.5;       // light-fluid density [kg/m^3]
-  double eta_light = 1e-3;      // light-fluid viscosity [Pa s]
+  double rho_light = twod::Rheology{}.rho_light;  // light-fluid density [kg/m^3]
+  double eta_light = twod::Rheology{}.eta_light;  // light-fluid viscosity [Pa s]
   std::string mixing = "arithmetic";
   double cfl = 0.4;
   int viscosity_passes = 1;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "chute_case.hpp"
+#include "parameters.hpp"
 #include "surface_series.hpp"
 
 namespace granbench {
@@ -38,7 +39,7 @@ struct TwodSettings {
   int nx = 160, nz = 32;
   double Lz_over_h0 = 2.0;
   double eta_max = 2.0;         // granular viscosity cap [Pa s] (DESIGN.md §8)
-  double rho_light = 1.5, eta_light = 1e-3;
+  double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
   int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
   int viscosity_passes = 1;     // Picard passes for eta per step (twod/parameters.hpp)
 };

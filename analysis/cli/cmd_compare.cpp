@@ -1,5 +1,5 @@
-// granbench compare: the main job. One chute flow (§7 defaults: 28.5 deg, h0 = 4 mm, Lz = 2 h0,
-// regularised curve) run with both models on the same rheology, each measured with the same
+// granbench compare: the main job. One chute flow (§7 defaults: 28.5 deg, h0 = 4 mm, Lz ~ 2 h0 with h0
+// mid-cell, regularised curve) run with both models on the same rheology, each measured with the same
 // analysis code, beside the exact linear theories at the same k_hat: (7.11), its chi = 5/4 form
 // and the 2D linear stability. Prints the side-by-side table (or --json), writes compare.h5 (both
 // SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
@@ -209,7 +209,7 @@ void add_compare_command(CLI::App& app) {
                   "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
       ->check(one_of({"coarse", "default", "fine"}))->capture_default_str();
   sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), > 0")->check(CLI::PositiveNumber);
-  sub->add_option("--nz", o->nz, "2D cells across Lz = 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  sub->add_option("--nz", o->nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--nx-depthavg", o->nx_depthavg, "depth-averaged cells (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--viscosity-passes", o->viscosity_passes,
                   "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "

@@ -49,7 +49,7 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.nz, "twod: cells along z, in [4, 4096]")
       ->check(CLI::Range(4, 4096))
       ->capture_default_str();
-  app.add_option("--Lz", o.Lz, "twod: domain height [m], > h0 + a0; default 2 h0")
+  app.add_option("--Lz", o.Lz, "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
       ->check(positive());
   app.add_option("--eta-max", o.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
       ->check(positive())
@@ -105,7 +105,7 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
   } catch (const CurveRangeError& e) {
     throw UsageError(std::string("--angle: ") + e.what());
   }
-  const double Lz = mo.Lz > 0.0 ? mo.Lz : 2.0 * o.flow.h0;
+  const double Lz = mo.Lz > 0.0 ? mo.Lz : twod::mid_cell_domain_height(o.flow.h0, mo.nz);
   if (!(Lz > o.flow.h0 + o.a0))
     throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
   if (!(mo.eta_min < mo.eta_max))

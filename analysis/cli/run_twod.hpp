@@ -13,7 +13,7 @@ namespace granbench::cli {
 
 struct TwodOptions {
   int nz = 64;                  // cells along z
-  double Lz = 0.0;              // domain height [m]; 0: 2 h0
+  double Lz = 0.0;              // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
   double eta_max = 2.0;         // granular viscosity cap [Pa s]
   double eta_min = 1e-3;        // granular viscosity floor [Pa s]
   double D_min = 1e-6;          // floor on |D| [1/s]

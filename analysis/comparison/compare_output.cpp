@@ -60,7 +60,7 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
         {"t_end", k.t_end}, {"mu_s", m.mu_s}, {"mu_d", m.mu_d}, {"I0", m.I0}, {"d", m.d},
         {"phi", m.phi}, {"rho_star", m.rho_star}, {"g", m.g}, {"mu_inf", m.mu_inf},
         {"alpha", m.alpha}, {"twod_nx", double(twod.nx)}, {"twod_nz", double(twod.nz)},
-        {"twod_Lz", twod.Lz_over_h0 * k.h0}, {"twod_eta_max", twod.eta_max},
+        {"twod_Lz", twod.domain_height(k.h0)}, {"twod_eta_max", twod.eta_max},
         {"twod_rho_light", twod.rho_light}, {"twod_eta_light", twod.eta_light},
         {"twod_viscosity_passes", double(twod.viscosity_passes)},
         {"depthavg_nx", double(depthavg.nx)}, {"depthavg_chi", depthavg.chi},

@@ -110,7 +110,7 @@ GridPreset grid_preset(const std::string& name) {
 ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl) {
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
-  const twod::Grid grid(s.nx, s.nz, c.Lx, s.Lz_over_h0 * c.h0);
+  const twod::Grid grid(s.nx, s.nz, c.Lx, s.domain_height(c.h0));
   twod::SolverParams params;
   params.zeta = base.zeta;
   params.rheology.material = c.material;

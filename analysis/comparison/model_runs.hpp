@@ -7,6 +7,7 @@
 #include <string>
 
 #include "chute_case.hpp"
+#include "grid.hpp"
 #include "parameters.hpp"
 #include "surface_series.hpp"
 
@@ -37,15 +38,18 @@ struct DepthAvgSettings {
 
 struct TwodSettings {
   int nx = 160, nz = 32;
-  double Lz_over_h0 = 2.0;
+  double Lz_over_h0 = 0.0;      // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
   double eta_max = 2.0;         // granular viscosity cap [Pa s] (DESIGN.md §8)
   double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
   int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
   int viscosity_passes = 1;     // Picard passes for eta per step (twod/parameters.hpp)
+  double domain_height(double h0) const {
+    return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);
+  }
 };
 
 // The named grids of compare and sweep ({coarse, default, fine}): 2D grids with 16, 32 and 64
-// cells per h0 (Lz = 2 h0) and 128, 256, 512 depth-averaged cells. docs/twod-validation.md shows
+// cells per h0 (Lz ~ 2 h0, the surface mid-cell) and 128, 256, 512 depth-averaged cells. docs/twod-validation.md shows
 // the 2D growth rate converging from below with the cells per h0 and first turning positive, as
 // the 2D theory says, at 32. Throws std::invalid_argument for another name.
 struct GridPreset {

@@ -34,7 +34,7 @@ struct SweepOptions {
   std::size_t nx = 192;
   double tolerance = 1e-6;
   double t_end = 0.0;
-  std::string resolution = "coarse";  // 2D grid of --model twod|both
+  std::string resolution = "default";  // 2D grid of --model twod|both (32 cells per h0)
   int viscosity_passes = 1;           // of --model twod|both
 };
 

@@ -50,14 +50,12 @@ TEST(CutoffSides, TwoDModelDecaysBelowTheCutoffOnTwoGrids) {
   }
 }
 
-TEST(CutoffSides, TwoDModelGrowsAboveTheCutoffAtThePhaseSpeedOfTheory) {
-  // Lx = 8 cm, seeded with the 2D eigenmode at the linear amplitude a0 = 0.02 mm, 32 cells per h0.
-  // Theory: +1.089 1/s at 1.138 m/s. The convergence study in docs/twod-validation.md sets what
-  // this grid can give: the growth converges from below with the cells per h0 (-2.41, -0.79,
-  // -0.24, -0.13 1/s at 8, 16, 32, 64 at a0 = 0.2 mm; +0.60 at 32 and +0.66 at 320 x 64 at
-  // a0 = 0.05 mm) and with the time step, and the phase speed is within 0.5 % on every grid of
-  // 32 cells per h0. So the check is the sign and the bound from above on the growth, and the
-  // phase speed to 1 %.
+TEST(CutoffSides, TwoDModelGrowsAboveTheCutoffAtTheRateAndSpeedOfTheory) {
+  // Lx = 8 cm, seeded with the 2D eigenmode at the linear amplitude a0 = 0.02 mm, 32 cells per h0
+  // with the surface mid-cell (the default grid). Theory: +1.089 1/s at 1.1380 m/s. The
+  // verification record (docs/twod-validation.md) measures this grid at 1.051 1/s (cfl 0.4), with
+  // 1.040 and 1.064 at cfl 0.2 and 0.1, and 1.012 / 1.064 at 16 / 64 cells per h0: the check is
+  // the growth within 10 % and the phase speed within 0.5 %.
   const ChuteCase c = chute(0.08, 1.0);
   const Theories t = exact_theories(c);
   ASSERT_GT(t.exact_2d.growth_rate, 0.0);
@@ -67,11 +65,10 @@ TEST(CutoffSides, TwoDModelGrowsAboveTheCutoffAtThePhaseSpeedOfTheory) {
   const ModelRun r = run_twod(c, s);
   ASSERT_EQ(r.outcome, RunOutcome::Completed) << r.message;
   const Measurement m = measure(r.series);
-  EXPECT_GT(m.whole_run.slope, 0.0);
-  EXPECT_LT(m.whole_run.slope, t.exact_2d.growth_rate);
-  EXPECT_NEAR(m.spectral.phase_speed / t.exact_2d.phase_speed, 1.0, 0.01);
+  EXPECT_NEAR(m.spectral.growth_rate, t.exact_2d.growth_rate, 0.10 * t.exact_2d.growth_rate);
+  EXPECT_NEAR(m.spectral.phase_speed / t.exact_2d.phase_speed, 1.0, 0.005);
   EXPECT_LT(r.mass_error, 1e-12);
-  std::cout << "twod 160x64, Lx = 8 cm: growth " << m.whole_run.slope << " 1/s (theory "
+  std::cout << "twod 160x64, Lx = 8 cm: growth " << m.spectral.growth_rate << " 1/s (theory "
             << t.exact_2d.growth_rate << "), phase speed " << m.spectral.phase_speed << " m/s (theory "
             << t.exact_2d.phase_speed << ")\n";
 }

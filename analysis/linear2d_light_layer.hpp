@@ -110,7 +110,7 @@ struct LightLayerOffsets {
 };
 LightLayerOffsets light_layer_offsets(int N, int M);
 
-// Finite eigenvalues, by decreasing real part (linear2d_spectrum.hpp).
+// Finite eigenvalues, by decreasing real part (linear2d_spectrum.hpp, two shifts).
 std::vector<std::complex<double>> light_layer_spectrum(const LinearBaseState& stress_free,
                                                        const LightLayerScaled& l, double k_hat,
                                                        int N, int M);

@@ -9,12 +9,13 @@ namespace granbench::linear2d {
 
 double LinearBaseState::U0(double z) const {
   if (profile == BaseProfile::Nusselt) return 3.0 * z - 1.5 * z * z;
-  return (5.0 / 3.0) * (1.0 - std::pow(1.0 - z, 1.5));  // (5.5) over u_bar_0
+  const double d = overburden;  // (5.5) over u_bar_0, for a layer 1 + d deep cut at z = 1
+  return (5.0 / 3.0) * (std::pow(1.0 + d, 1.5) - std::pow(1.0 - z + d, 1.5));
 }
 
 double LinearBaseState::dU0(double z) const {
   if (profile == BaseProfile::Nusselt) return 3.0 * (1.0 - z);
-  return 2.5 * std::sqrt(1.0 - z);  // derivative of (5.5): I_zeta sqrt(p0/rho_*)/d, scaled
+  return 2.5 * std::sqrt(1.0 - z + overburden);  // d(5.5)/dz: I_zeta sqrt(p0/rho_*)/d, scaled
 }
 
 LinearBaseState mu_i_base_state(const SteadyState& s, const MuCurve& curve) {

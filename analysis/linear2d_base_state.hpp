@@ -35,6 +35,12 @@ struct LinearBaseState {
   double eta_n0 = 0.0;  // eta_n = eta_n0 (1 - z)^beta
   double eta_s0 = 0.0;  // eta_s = eta_s0 (1 - z)^beta
   double beta = 0.5;    // 1/2 (mu(I): eta ~ sqrt(p0)) or 0 (Newtonian)
+  // Scaled pressure delta on the surface (Bagnold only): the weight of a fluid layer above the
+  // grains (linear2d_light_layer.hpp). Its shear traction is mu delta, so mu(I) = tan(zeta) still
+  // holds and the state is the Bagnold profile of a layer 1 + delta deep cut at z = 1:
+  // p0 = 1 - z + delta, U0' = (5/2)(1 - z + delta)^{1/2}, eta ~ (1 - z + delta)^{1/2}. 0: the
+  // stress-free surface of (5.4)-(5.5).
+  double overburden = 0.0;
 
   double U0(double z) const;   // base velocity
   double dU0(double z) const;  // dU0/dz

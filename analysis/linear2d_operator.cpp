@@ -34,6 +34,13 @@ Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGr
   if (a_power < 0.0)
     throw std::invalid_argument(
         "the z = 1 - s^2 map needs a viscosity vanishing like sqrt(1 - z); use the linear map");
+  // With an overburden delta the viscosity is ~ sqrt(1 - z + delta): the map becomes
+  // z = 1 + delta - s^2 on s in [sqrt(delta), sqrt(1 + delta)], taken linearly onto the grid's
+  // [0, 1] (s = s_top + ell sigma). delta = 0 gives s = sigma, the map above, bit for bit.
+  const double delta = b.overburden;
+  if (delta < 0.0 || (delta > 0.0 && (map != VerticalMap::SquareRoot || b.beta != 0.5)))
+    throw std::invalid_argument("an overburden needs the Bagnold state and the square-root map");
+  const double s_top = std::sqrt(delta), ell = std::sqrt(1.0 + delta) - s_top;
 
   const int N = grid.intervals();
   const int n = N + 1;
@@ -50,16 +57,16 @@ Pencil assemble_pencil(const LinearBaseState& b, double k_hat, const ChebyshevGr
   const int iu = P.u(), iw = P.w(), iN = P.normal(), iT = P.shear(), iH = P.h();
 
   for (int j = 0; j < n; ++j) {
-    const double s = grid.s()(j);
-    const double z = map_height(map, s);
-    const double zs = -m * std::pow(s, m - 1);         // dz/ds
-    const double depth_pow = std::pow(s, m * b.beta);  // (1 - z)^beta
+    const double s = s_top + ell * grid.s()(j);
+    const double z = map_height(map, s) + delta;
+    const double zs = -m * std::pow(s, m - 1) * ell;   // dz/dsigma
+    const double depth_pow = std::pow(s, m * b.beta);  // (1 - z + delta)^beta
     const bool in_layer = 1.0 - z < layer.depth;
     const double fn = in_layer ? layer.eta_n : 1.0, fs = in_layer ? layer.eta_s : 1.0;
     const double q = in_layer ? layer.q * b.q : b.q;
     const double eta_n = fn * b.eta_n0 * depth_pow;
     const double eta_s = fs * b.eta_s0 * depth_pow;
-    const double a = -fs * (b.eta_s0 / m) * std::pow(s, a_power);  // eta_s / z_s
+    const double a = -fs * (b.eta_s0 / (m * ell)) * std::pow(s, a_power);  // eta_s / z_s
     const double U0 = b.U0(z), dU0 = b.dU0(z);
 
     // Constitutive law tau_xz = eta_s (du/dz + i k w) + q p, p = N - 2 i k eta_n u  (3.2)-(3.3)

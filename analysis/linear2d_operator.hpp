@@ -24,6 +24,10 @@
 //   h] N_s - z_s (i k T - F^2 (lambda + i k U0) w) = 0                              [surface: N =
 //   h]
 //
+// With an overburden delta on the surface (LinearBaseState::overburden, the light fluid of
+// linear2d_light_layer.hpp) eta ~ sqrt(1 - z + delta) and the map is z = 1 + delta - s^2, s in
+// [sqrt(delta), sqrt(1 + delta)]; the surface rows above stay the stress-free ones, and the
+// light layer adds the fluid's stresses to them.
 // The plain map z = 1 - s is also provided, to show what the degenerate viscosity does to it.
 // Unknown vector: u(s_0..s_N), w(...), N(...), T(...), h, with s_0 = 1 the bed and s_N = 0 the
 // surface. B is singular (the constraint and boundary rows): only N of the 4N + 5 eigenvalues

@@ -74,6 +74,22 @@ std::vector<std::complex<double>> finite_eigenvalues(const Pencil& P, std::compl
   return out;
 }
 
+std::vector<std::complex<double>> finite_eigenvalues_two_shifts(const Pencil& P,
+                                                                std::complex<double> shift1,
+                                                                std::complex<double> shift2,
+                                                                const SpectrumOptions& opt) {
+  const auto second = shift_invert_eigenvalues(P, shift2, opt);
+  std::vector<std::complex<double>> out;
+  for (const auto& lambda : shift_invert_eigenvalues(P, shift1, opt)) {
+    const bool confirmed = std::any_of(second.begin(), second.end(), [&](const auto& mu) {
+      return std::abs(mu - lambda) <= opt.match_tolerance * std::max(1.0, std::abs(lambda));
+    });
+    if (confirmed) out.push_back(lambda);
+  }
+  std::sort(out.begin(), out.end(), [](auto a, auto b) { return a.real() > b.real(); });
+  return out;
+}
+
 Eigenpair eigenpair(const Pencil& P, std::complex<double> lambda) {
   // Inverse iteration: (A - lambda B) x_{j+1} = B x_j. With lambda accurate to round-off the
   // matrix is numerically singular and one or two steps give the eigenvector.

@@ -35,6 +35,15 @@ struct SpectrumOptions {
 std::vector<std::complex<double>> finite_eigenvalues(const Pencil& P, std::complex<double> shift,
                                                      const SpectrumOptions& opt = {});
 
+// The same without QZ: an eigenvalue is kept when shift-and-invert finds it at both shifts (the
+// spurious values of the perturbed Jordan blocks move with the shift, finite eigenvalues do not).
+// For pencils whose realified QZ does not converge (the light layer, linear2d_light_layer.hpp,
+// whose pencil is larger and has more infinite eigenvalues).
+std::vector<std::complex<double>> finite_eigenvalues_two_shifts(const Pencil& P,
+                                                                std::complex<double> shift1,
+                                                                std::complex<double> shift2,
+                                                                const SpectrumOptions& opt = {});
+
 struct Eigenpair {
   std::complex<double> lambda;  // scaled: growth = Re, phase speed = -Im/k_hat
   Eigen::VectorXcd v;           // eigenvector, |v| = 1

@@ -126,6 +126,38 @@ void attach_check(Linear2DMode& m, const std::vector<std::complex<double>>& fine
       std::abs(m.lambda_hat - m.lambda_hat_check) / std::abs(m.lambda_hat_check);
 }
 
+// The light-layer counterparts of the stress-free modes of r, and the layer's own unstable modes.
+Linear2DLightLayerResult light_layer_modes(const SteadyState& s, const Linear2DResult& r,
+                                           const linear2d::LightLayer& layer) {
+  using namespace linear2d;
+  Linear2DLightLayerResult out;
+  out.layer = layer;
+  out.scaled = scale(layer, s);
+  const auto& l = out.scaled;
+  auto mode = [&](std::complex<double> lambda_free, bool surface) {
+    const auto lambda = continue_from_stress_free(r.base, l, r.k_hat, r.N, r.N, lambda_free);
+    Linear2DMode m = make_mode(lambda, r.k_hat, s);
+    m.surface = surface;
+    if (r.N_check > 0) {
+      m.lambda_hat_check =
+          nearest_light_layer_eigenvalue(r.base, l, r.k_hat, r.N_check, r.N_check, lambda);
+      m.relative_difference =
+          std::abs(m.lambda_hat - m.lambda_hat_check) / std::abs(m.lambda_hat_check);
+    }
+    return m;
+  };
+  out.surface = mode(r.surface.lambda_hat, true);
+  for (const auto& u : r.unstable)
+    out.continued.push_back(u.surface ? out.surface : mode(u.lambda_hat, false));
+  for (const auto& l_hat : light_layer_spectrum(r.base, l, r.k_hat, r.N, r.N)) {
+    if (!(l_hat.real() > 0.0)) break;  // sorted by decreasing real part
+    Linear2DMode m = make_mode(l_hat, r.k_hat, s);
+    m.surface = std::abs(l_hat - out.surface.lambda_hat) <= 1e-8 * std::abs(l_hat);
+    out.unstable.push_back(m);
+  }
+  return out;
+}
+
 }  // namespace
 
 Linear2DResult linear_stability_2d(const SteadyState& s, const MuCurve& curve, double Lx,
@@ -159,6 +191,7 @@ Linear2DResult linear_stability_2d(const SteadyState& s, const MuCurve& curve, d
     r.unstable.push_back(m);
   }
   r.surface_pair = eigenpair(P, surface_lambda);
+  if (opt.light_layer) r.light_layer = light_layer_modes(s, r, *opt.light_layer);
   return r;
 }
 

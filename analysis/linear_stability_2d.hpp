@@ -19,9 +19,11 @@
 
 #include <complex>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "linear2d_base_state.hpp"
+#include "linear2d_light_layer.hpp"
 #include "linear2d_operator.hpp"
 #include "linear2d_spectrum.hpp"
 #include "mu_curves.hpp"
@@ -70,6 +72,9 @@ struct Linear2DOptions {
   int N_check = 48;  // second resolution for the convergence check (none if <= N)
   linear2d::VerticalMap map = linear2d::VerticalMap::SquareRoot;
   linear2d::ContinuationOptions path;
+  // The light fluid of the 2D solver above the grains (linear2d_light_layer.hpp); absent: the
+  // stress-free surface only. Its modes are computed with N (and N_check) points in the fluid too.
+  std::optional<linear2d::LightLayer> light_layer;
 };
 
 struct Linear2DMode {
@@ -81,6 +86,17 @@ struct Linear2DMode {
   double relative_difference = std::numeric_limits<double>::quiet_NaN();  // |l(N)-l(Nc)|/|l(Nc)|
 };
 
+// The modes of the grains under the light fluid. Each unstable stress-free mode is continued to
+// the layer (rho_l, eta_l raised together from 1e-8 of their values), so `continued[i]` is the
+// counterpart of `Linear2DResult::unstable[i]` and `surface` that of the surface mode.
+struct Linear2DLightLayerResult {
+  linear2d::LightLayer layer;
+  linear2d::LightLayerScaled scaled;
+  Linear2DMode surface;
+  std::vector<Linear2DMode> continued;
+  std::vector<Linear2DMode> unstable;  // all modes of the layer with growth > 0, largest first
+};
+
 struct Linear2DResult {
   double Lx = 0.0;
   double k_hat = 0.0;
@@ -90,6 +106,7 @@ struct Linear2DResult {
   Linear2DMode surface;
   std::vector<Linear2DMode> unstable;  // all modes with growth > 0, largest first
   linear2d::Eigenpair surface_pair;    // scaled eigenvector of the surface mode at N
+  std::optional<Linear2DLightLayerResult> light_layer;  // with Linear2DOptions::light_layer
 };
 
 // The 2D linear stability of the Bagnold state `s` of `curve` at wavelength Lx [m].

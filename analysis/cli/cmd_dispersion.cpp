@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <numbers>
+#include <optional>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -13,6 +14,7 @@
 #include "dispersion_curve.hpp"
 #include "dispersion_twod.hpp"
 #include "hdf5_file.hpp"
+#include "parameters.hpp"
 #include "steady_state.hpp"
 
 namespace granbench::cli {
@@ -27,7 +29,22 @@ struct DispersionOptions {
   std::vector<double> Lx;
   std::string theory = "depthavg";
   int resolution = 32;  // Chebyshev intervals of --theory twod
+  // --light-layer: the 2D solver's light fluid above the grains, defaults from the solver.
+  bool light_layer = false;
+  double rho_light = twod::Rheology{}.rho_light;
+  double eta_light = twod::Rheology{}.eta_light;
+  double Lz = 0.0;  // [m]; 0: 2 h0, the solver's default
 };
+
+// The light layer of the options, validated (one-line errors naming the option).
+std::optional<linear2d::LightLayer> light_layer(const DispersionOptions& o, Theory theory) {
+  if (!o.light_layer) return std::nullopt;
+  if (theory != Theory::TwoD) throw UsageError("--light-layer: only with --theory twod");
+  const double Lz = o.Lz > 0.0 ? o.Lz : 2.0 * o.flow.h0;
+  if (!(Lz > o.flow.h0))
+    throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0, inf)");
+  return linear2d::LightLayer{o.rho_light, o.eta_light, Lz / o.flow.h0};
+}
 
 Theory parse_theory(const std::string& t) {
   if (t == "depthavg") return Theory::DepthAvg;
@@ -64,9 +81,10 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
 void run_dispersion(const DispersionOptions& o) {
   const SteadyState s = o.flow.steady();
   const Theory theory = parse_theory(o.theory);
+  const auto layer = light_layer(o, theory);
   if (theory == Theory::TwoD)
     return run_twod_dispersion(s, o.flow.make_curve(), o.Lx,
-                               {o.resolution, o.flow.curve, o.flow.angle_deg}, o.output);
+                               {o.resolution, o.flow.curve, o.flow.angle_deg, layer}, o.output);
   const double chi = theory == Theory::DepthAvgBagnold ? 1.25 : 1.0;
   const DispersionParams p = DispersionParams::from(s, chi);
 
@@ -107,11 +125,12 @@ void run_dispersion(const DispersionOptions& o) {
   }
   std::cout << std::setprecision(5) << "Temporal dispersion relation, theory " << o.theory
             << " (chi = " << chi << "), " << o.flow.curve << " curve, angle " << o.flow.angle_deg
-            << " deg, h0 = " << s.h0 << " m\n  F = " << p.F << " (critical "
-            << critical_froude(chi) << "), R = " << p.R << ", Gamma = " << p.Gamma << "\n\n"
+            << " deg, h0 = " << s.h0 << " m\n  F = " << p.F << " (critical " << critical_froude(chi)
+            << "), R = " << p.R << ", Gamma = " << p.Gamma << "\n\n"
             << "  " << std::setw(10) << "Lx [m]" << std::setw(10) << "k_hat" << std::setw(14)
             << "Re lam_hat" << std::setw(14) << "Im lam_hat" << std::setw(15) << "growth [1/s]"
-            << std::setw(15) << "speed [m/s]" << "\n";
+            << std::setw(15) << "speed [m/s]"
+            << "\n";
   for (const auto& m : modes)
     std::cout << "  " << std::setw(10) << m.Lx << std::setw(10) << m.k_hat << std::setw(14)
               << m.lambda_hat.real() << std::setw(14) << m.lambda_hat.imag() << std::setw(15)
@@ -140,6 +159,26 @@ void add_dispersion_command(CLI::App& app) {
   sub->add_option("--resolution", opts->resolution,
                   "Chebyshev intervals for --theory twod, in [8, 160] (check at 3N/2)")
       ->capture_default_str();
+  const std::string light = "Light layer (--theory twod --light-layer)";
+  auto* flag = sub->add_flag("--light-layer", opts->light_layer,
+                             "--theory twod: also the grains under the 2D solver's light fluid "
+                             "(density --rho-light, viscosity --eta-light, top at --Lz: p = 0, "
+                             "du/dz = 0)")
+                   ->group(light);
+  sub->add_option("--rho-light", opts->rho_light, "light-fluid density [kg/m^3], > 0")
+      ->check(positive())
+      ->needs(flag)
+      ->group(light)
+      ->capture_default_str();
+  sub->add_option("--eta-light", opts->eta_light, "light-fluid viscosity [Pa s], > 0")
+      ->check(positive())
+      ->needs(flag)
+      ->group(light)
+      ->capture_default_str();
+  sub->add_option("--Lz", opts->Lz, "domain height [m], > h0; default 2 h0")
+      ->check(positive())
+      ->needs(flag)
+      ->group(light);
   sub->callback([opts] { run_dispersion(*opts); });
 }
 

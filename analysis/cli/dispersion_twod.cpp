@@ -28,6 +28,26 @@ nlohmann::json mode_json(const Linear2DMode& m) {
           {"relative_difference", number_or_null(m.relative_difference)}};
 }
 
+// The light-layer counterpart of the stress-free mode `free`, with the differences.
+nlohmann::json light_mode_json(const Linear2DMode& m, const Linear2DMode& free) {
+  nlohmann::json j = mode_json(m);
+  j["growth_rate_difference"] = m.growth_rate - free.growth_rate;
+  j["phase_speed_difference"] = m.phase_speed - free.phase_speed;
+  return j;
+}
+
+nlohmann::json light_layer_json(const Linear2DResult& r) {
+  const auto& l = *r.light_layer;
+  nlohmann::json continued = nlohmann::json::array(), unstable = nlohmann::json::array();
+  for (std::size_t i = 0; i < l.continued.size(); ++i)
+    continued.push_back(light_mode_json(l.continued[i], r.unstable[i]));
+  for (const auto& u : l.unstable) unstable.push_back(mode_json(u));
+  nlohmann::json j = light_mode_json(l.surface, r.surface);
+  j["continued_branches"] = continued;
+  j["unstable_branches"] = unstable;
+  return j;
+}
+
 void write_theories(const std::string& path, const SteadyState& s,
                     const std::vector<Linear2DResult>& results, const Linear2DOptions& opt) {
   std::vector<double> k_hat;
@@ -110,6 +130,7 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
   Linear2DOptions opt;
   opt.N = t.N;
   opt.N_check = t.N + t.N / 2;
+  opt.light_layer = t.light_layer;
   std::vector<Linear2DResult> results;
   for (double L : Lx) results.push_back(linear_stability_2d(s, curve, L, opt));  // (1)
   const auto probe = linear2d::probe_ill_posedness(s, curve);                    // (2)
@@ -141,9 +162,21 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
       nlohmann::json branches = nlohmann::json::array();
       for (const auto& u : r.unstable) branches.push_back(mode_json(u));
       m["unstable_branches"] = branches;
+      if (r.light_layer) m["light_layer"] = light_layer_json(r);
       list.push_back(m);
     }
+    nlohmann::json layer = nullptr;
+    if (t.light_layer) {
+      const auto l = linear2d::scale(*t.light_layer, s);
+      layer = {{"rho_light", t.light_layer->rho_l},
+               {"eta_light", t.light_layer->eta_l},
+               {"Lz", t.light_layer->Lz_over_h0 * s.h0},
+               {"density_ratio", l.r},
+               {"viscosity_scaled", l.eps},
+               {"overburden_scaled", l.overburden()}};
+    }
     print_json({{"theory", "twod"},
+                {"light_layer", layer},
                 {"F", s.Fr},
                 {"F_critical", F_c},
                 {"Gamma", base.Gamma},
@@ -175,6 +208,24 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
     for (const auto& u : r.unstable)
       if (!u.surface) std::cout << " (" << u.growth_rate << ", " << u.phase_speed << ")";
     std::cout << "\n";
+    if (!r.light_layer) continue;
+    const auto& l = *r.light_layer;
+    std::cout << "  " << std::setw(10) << "  light" << std::setw(10) << "" << std::setw(15)
+              << l.surface.growth_rate << std::setw(15) << l.surface.phase_speed << std::setw(12)
+              << std::setprecision(2) << l.surface.relative_difference << std::setprecision(5)
+              << "  ";
+    for (const auto& c : l.continued)
+      if (!c.surface) std::cout << " (" << c.growth_rate << ", " << c.phase_speed << ")";
+    std::cout << "\n";
+  }
+  if (t.light_layer) {
+    const auto l = linear2d::scale(*t.light_layer, s);
+    std::cout << "\n  light: grains under a fluid of density " << t.light_layer->rho_l
+              << " kg/m^3, viscosity " << t.light_layer->eta_l
+              << " Pa s up to Lz = " << t.light_layer->Lz_over_h0 * s.h0
+              << " m (p = 0, du/dz = 0 there): "
+              << "rho_l/rho_g = " << l.r << ", overburden " << l.overburden()
+              << " h0; other branches continued from the stress-free ones\n";
   }
   std::cout << "\n  " << probe.message << "\n";
 }

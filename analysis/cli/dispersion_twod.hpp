@@ -3,9 +3,11 @@
 // ill-posedness probe; JSON, table, and an HDF5 file with the three theories over k_hat.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "cli_common.hpp"
+#include "linear2d_light_layer.hpp"
 #include "mu_curves.hpp"
 #include "steady_state.hpp"
 
@@ -15,6 +17,7 @@ struct TwoDDispersionOptions {
   int N = 32;  // Chebyshev intervals; the check uses 3N/2
   std::string curve_name;
   double angle_deg = 0.0;
+  std::optional<linear2d::LightLayer> light_layer;  // --light-layer
 };
 
 void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::vector<double>& Lx,

@@ -1,7 +1,7 @@
 // `granbench dispersion --theory twod` end to end: the documented JSON (growth rate and phase
 // speed of the surface mode, convergence check, unstable branches, ill-posedness probe), agreement
 // with the library, the warning for an ill-posed base state, and bad input (exit 2, one line
-// naming the option, no output file).
+// naming the option, no output file); the --light-layer options and output.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -63,4 +63,39 @@ TEST(Linear2DCli, BadResolutionIsRejectedWithoutOutput) {
   EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[8, 160]"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(Linear2DCli, LightLayerJsonCarriesTheFluidModes) {
+  const auto r =
+      run("dispersion --theory twod --Lx 0.02 --light-layer --rho-light 1.5 --eta-light 1e-3 --Lz "
+          "0.008 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["light_layer"]["rho_light"].get<double>(), 1.5);
+  EXPECT_DOUBLE_EQ(j["light_layer"]["Lz"].get<double>(), 0.008);
+  EXPECT_NEAR(j["light_layer"]["density_ratio"].get<double>(), 1e-3, 1e-15);
+  const auto& m = j["modes"][0];
+  const auto& l = m["light_layer"];
+  EXPECT_TRUE(l["surface_mode"].get<bool>());
+  EXPECT_LT(l["relative_difference"].get<double>(), 1e-6);
+  EXPECT_NEAR(l["growth_rate_difference"].get<double>(),
+              l["growth_rate"].get<double>() - m["growth_rate"].get<double>(), 1e-12);
+  EXPECT_NEAR(l["growth_rate"].get<double>(), 0.6364, 1e-3);  // the stress-free 0.820
+  // The slow branch continued: first of the two stress-free unstable branches.
+  ASSERT_EQ(l["continued_branches"].size(), 2u);
+  EXPECT_NEAR(l["continued_branches"][0]["phase_speed"].get<double>(), 0.3200, 1e-3);
+  EXPECT_GE(l["unstable_branches"].size(), 2u);
+}
+
+TEST(Linear2DCli, LightLayerOptionsAreChecked) {
+  auto fails_naming = [](const std::string& args, const std::string& option) {
+    const auto r = run(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+  };
+  fails_naming("dispersion --theory twod --Lx 0.08 --light-layer --rho-light 0", "--rho-light");
+  fails_naming("dispersion --theory twod --Lx 0.08 --light-layer --eta-light -1", "--eta-light");
+  fails_naming("dispersion --theory twod --Lx 0.08 --light-layer --Lz 0.004", "--Lz");
+  fails_naming("dispersion --theory twod --Lx 0.08 --rho-light 1", "--light-layer");
+  fails_naming("dispersion --theory depthavg --Lx 0.08 --light-layer", "--light-layer");
 }

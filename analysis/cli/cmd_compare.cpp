@@ -213,8 +213,7 @@ void add_compare_command(CLI::App& app) {
   sub->add_option("--nx-depthavg", o->nx_depthavg, "depth-averaged cells (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--viscosity-passes", o->viscosity_passes,
                   "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
-                  "(2 removes most of the time-step error of the 2D growth rate at about twice "
-                  "the cost)")
+                  "(1 is second order in time already; more passes cost n times as much)")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
   sub->callback([o] { run_compare(*o); });

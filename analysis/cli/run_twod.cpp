@@ -74,8 +74,8 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
       ->capture_default_str();
   app.add_option("--viscosity-passes", o.viscosity_passes,
                  "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
-                 "(1: eta lagged one step; 2 removes most of the time-step error of the growth "
-                 "rate at about twice the cost, docs/twod-validation.md)")
+                 "(1: one solve, second order in time through the stress tangent; more passes "
+                 "cost n times as much, docs/twod-validation.md)")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
   app.add_option("--dt-max", o.dt_max, "twod: largest time step [s], > 0")

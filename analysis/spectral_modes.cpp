@@ -126,13 +126,16 @@ PencilFit fit_exponentials(std::span<const std::complex<double>> y, double dt,
   const double T = dt * static_cast<double>(y.size() - 1);
   PencilFit best;
   double best_score = INFINITY;
+  bool best_meets = false;  // the kept fit meets target_residual
   for (int M = 1; M <= M_max; ++M) {
     PencilFit f = fit_from_svd(y, dt, M, h);
     if (!finite(f) || (M > 1 && !resolved(f, T, opt.min_beats))) continue;
+    const bool meets = f.relative_residual <= opt.target_residual;
     const double score =
         std::max(f.relative_residual, opt.residual_floor) * std::pow(opt.improvement, M - 1);
-    if (score < best_score) {
+    if ((meets && !best_meets) || (meets == best_meets && score < best_score)) {
       best_score = score;
+      best_meets = meets;
       best = std::move(f);
     }
   }

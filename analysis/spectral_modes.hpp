@@ -22,13 +22,15 @@
 //    r_M = ||y - sum a_j z_j^n|| / ||y|| measures how well M components describe the data.
 //
 // Choice of M (fit_exponentials with PencilOptions): every M = 1 .. max_components is fitted
-// from the one SVD, and the M with the smallest max(r_M, residual_floor) * improvement^(M-1) is
-// kept, so each extra component must lower the residual `improvement`-fold (a real wave does; a
-// component fitted to noise or round-off gains little). An M is admissible only if its components
-// are resolved: every two differ in angular frequency by at least 2 pi min_beats / T over the
-// window length T = (N-1) dt. Two components that do not beat within the window cannot be told
-// apart from one component whose amplitude is not exponential, e.g. growth that stalls, which is
-// exactly what the fit must not absorb.
+// from the one SVD. An M is admissible only if its components are resolved: every two differ in
+// angular frequency by at least 2 pi min_beats / T over the window length T = (N-1) dt (default
+// half a beat; the pencil resolves closer frequencies than the Fourier limit 1/T, but two
+// components at one frequency cannot be told apart from one component whose amplitude is not
+// exponential, e.g. growth that stalls, which is exactly what the fit must not absorb). Among the
+// admissible M whose residual meets target_residual (all admissible M when none does), the one
+// with the smallest max(r_M, residual_floor) * improvement^(M-1) is kept: the fewest components
+// that describe the data, plus each further one that lowers the residual `improvement`-fold (a
+// real wave does; a component fitted to noise or round-off gains little).
 #pragma once
 
 #include <complex>
@@ -51,10 +53,11 @@ struct PencilFit {
 
 struct PencilOptions {
   int max_components = 3;
-  double improvement = 10.0;     // residual factor an extra component must gain
-  double residual_floor = 1e-9;  // residuals below this count as exact (round-off)
-  double min_beats = 1.0;        // beat periods two components must show within the window
-  std::size_t max_pencil = 64;   // cap on the pencil parameter L
+  double target_residual = 1e-3;  // a fit this close describes the data
+  double improvement = 10.0;      // residual factor a further component must gain
+  double residual_floor = 1e-9;   // residuals below this count as exact (round-off)
+  double min_beats = 0.5;         // beat periods two components must show within the window
+  std::size_t max_pencil = 64;    // cap on the pencil parameter L
 };
 
 // Smallest number of samples the pencil accepts for M components.

@@ -40,6 +40,8 @@ std::size_t seeded_index(const std::vector<WaveMode>& modes, double expected_spe
 
 struct Window {
   std::size_t first, last;
+  std::vector<WaveMode> modes;
+  std::size_t seeded;  // index in modes
   PencilFit fit;
 };
 
@@ -108,8 +110,10 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
   const std::size_t usable = end - i0;
   const std::size_t end_stride = std::max<std::size_t>(1, usable / 100);
   const std::size_t start_stride = std::max<std::size_t>(1, usable / 20);
+  PencilOptions pencil = opt.pencil;
+  pencil.target_residual = opt.max_residual;
   auto fit = [&](std::size_t i, std::size_t j) {
-    return fit_exponentials(std::span(hk).subspan(i, j - i + 1), dt, opt.pencil);
+    return fit_exponentials(std::span(hk).subspan(i, j - i + 1), dt, pencil);
   };
   auto to_modes = [&](const PencilFit& f) {
     std::vector<WaveMode> modes;
@@ -118,11 +122,20 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
     return modes;
   };
 
+  // Rule 5: the window spans min_efolds e-folds or min_periods periods of the seeded component.
+  auto long_enough = [&](const Window& w) {
+    const double T = s.t[w.last] - s.t[w.first];
+    const WaveMode& seeded = w.modes[w.seeded];
+    return std::fabs(seeded.growth_rate) * T >= opt.min_efolds ||
+           std::fabs(m.k * seeded.phase_speed) * T >= 2 * std::numbers::pi * opt.min_periods;
+  };
+
   double best_residual = INFINITY;
   std::size_t best_i = i0, best_j = i0 + n_min - 1;
   std::string short_window;
   for (std::size_t i = i0; i + n_min <= end; i += start_stride) {
-    // Rule 4: the first run of ends the model describes.
+    // Rule 4: from this start, the ends advance until a clean window is long enough (rule 5), and
+    // on while the fit stays clean; the first end after that with a larger residual stops them.
     std::optional<Window> w;
     for (std::size_t j = i + n_min - 1;; j = std::min(j + end_stride, end - 1)) {
       PencilFit f = fit(i, j);
@@ -131,18 +144,24 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
         best_i = i;
         best_j = j;
       }
-      if (f.relative_residual <= opt.max_residual)
-        w = Window{i, j, std::move(f)};
-      else if (w)
+      if (f.relative_residual <= opt.max_residual) {
+        Window c{i, j, to_modes(f), 0, std::move(f)};
+        c.seeded = seeded_index(c.modes, opt.seeded_phase_speed);
+        if (long_enough(c))
+          w = std::move(c);
+        else if (!w && short_window.empty())
+          short_window = "; clean windows such as [" + format(s.t[i]) + ", " + format(s.t[j]) +
+                         "] s span fewer than " + format(opt.min_efolds) + " e-folds and " +
+                         format(opt.min_periods) + " periods of the seeded wave";
+      } else if (w) {
         break;
+      }
       if (j == end - 1) break;  // the stride always ends on the last usable sample
     }
     if (!w) continue;
-    const auto modes = to_modes(w->fit);
-    const std::size_t seeded = seeded_index(modes, opt.seeded_phase_speed);
+    const auto& modes = w->modes;
+    const std::size_t seeded = w->seeded;
     const double sigma = modes[seeded].growth_rate;
-    const double omega = std::fabs(m.k * modes[seeded].phase_speed);
-    const double T = s.t[w->last] - s.t[w->first];
     // Rule 6: a stall.
     if (i > i0) {
       const double efolds = std::log(std::abs(hk[i]) / std::abs(hk[i0]));
@@ -155,15 +174,6 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
                    format(sigma) + " 1/s";
         return m;
       }
-    }
-    // Rule 5: long enough.
-    if (std::fabs(sigma) * T < opt.min_efolds &&
-        omega * T < 2 * std::numbers::pi * opt.min_periods) {
-      if (short_window.empty())
-        short_window = "; the clean window [" + format(s.t[w->first]) + ", " +
-                       format(s.t[w->last]) + "] s spans fewer than " + format(opt.min_efolds) +
-                       " e-folds and " + format(opt.min_periods) + " periods";
-      continue;
     }
     m.modes = modes;
     m.seeded = seeded;

@@ -175,7 +175,7 @@ TEST(SurfaceMeasurement, WindowEndsBeforeThePlateau) {
   // Logistic growth at rate 3 saturating at 1e-4 m (2.5 % of h0, under the linear bound, so the
   // residual rule has to end the window), half of it at t_half = 3.8 s. ln A departs from the
   // line by about A/a_max, and the relative residual over a growing window is about a tenth of the
-  // departure at its end, so a clean fit (residual 1e-3) covers A up to ~1e-2 a_max: the growth
+  // departure at its end, so a clean fit (residual 5e-4) covers A up to ~1e-2 a_max: the growth
   // from 1e-9 m leaves ~2 s of clean exponential.
   const Wave w{3.0, 1.1, 1e-9, 0.0};
   const double a_max = 1e-4;

@@ -55,7 +55,7 @@ struct MeasureOptions {
   double transient = NAN;           // [s] skipped after the first sample; NaN: fraction below
   double transient_fraction = 0.1;  // of the run's duration
   double linear_bound = 0.05;       // of h0; <= 0 or infinite: no bound
-  double max_residual = 1e-3;       // relative residual of a clean fit
+  double max_residual = 5e-4;       // relative residual of a clean fit (pencil.target_residual)
   std::size_t min_samples = 16;
   double min_efolds = 1.0;   // the window spans this many e-folds of the seeded mode
   double min_periods = 1.0;  // ... or this many of its periods

@@ -1,5 +1,5 @@
 // A small RAII wrapper over FFTW's real-to-complex and complex-to-real transforms of one length,
-// for the spectral analyses of a SurfaceSeries (spectral_growth, wave_speed). FFTW's planner is
+// for the spectral analyses of a SurfaceSeries (surface_measurement, wave_speed). FFTW's planner is
 // not thread-safe, so plan creation and destruction are serialised by one mutex (the sweep
 // analyses runs in parallel threads); executing a plan is thread-safe.
 //

@@ -46,7 +46,10 @@ LinearRunResult linear_run(const SteadyState& base, const MuCurve& curve, double
   r.mass_error = run.mass_error();
   r.ok = run.status == RunStatus::Completed;
   r.message = run.message;
-  r.measured = spectral_growth(run.series, p.mode);
+  MeasureOptions m;
+  m.mode = p.mode;
+  m.seeded_phase_speed = r.exact.phase_speed;
+  r.measured = measure_surface_series(run.series, m);
   return r;
 }
 

@@ -1,11 +1,13 @@
 // A clean linear-regime measurement with the depth-averaged solver: seed the normal mode (7.10)
 // of the (chi-generalised) linearised equations (7.7)-(7.8) at a tiny amplitude, integrate with
 // unlimited central reconstruction and tight tolerances, and measure the growth rate and phase
-// speed of the seeded mode spectrally (analysis/spectral_growth.hpp), beside the exact relation
+// speed of the seeded mode spectrally (analysis/surface_measurement.hpp, the seeded component
+// identified by the exact phase speed), beside the exact relation
 // (7.11) (analysis/dispersion.hpp). One point of `granbench sweep` and of the accuracy tests.
 //
-// Tolerances are relative to the perturbation (see LinearRunParams). Run length: t_end = max(4 wave periods, 0.5 / |Re lambda|), capped at 5 s, unless given;
-// dt_out = min(period/16, t_end/40), so the phase unwraps (|c| dt_out < Lx/2).
+// Tolerances are relative to the perturbation (see LinearRunParams). Run length: t_end = max(4 wave
+// periods, 0.5 / |Re lambda|), capped at 5 s, unless given; dt_out = min(period/16, t_end/40), so
+// the phase unwraps (|c| dt_out < Lx/2).
 #pragma once
 
 #include <string>
@@ -13,7 +15,7 @@
 #include "dispersion.hpp"
 #include "params.hpp"
 #include "solver.hpp"
-#include "spectral_growth.hpp"
+#include "surface_measurement.hpp"
 
 namespace granbench::depthavg {
 
@@ -37,7 +39,7 @@ struct LinearRunParams {
 struct LinearRunResult {
   double Lx = 0.0;
   DispersionMode exact;          // (7.11) with chi, at k = 2 pi mode / Lx
-  SpectralGrowth measured;
+  SurfaceMeasurement measured;   // NaN numbers and a reason when no clean window
   CvodeStats stats;
   double wall_seconds = 0.0;
   double t_end = 0.0;

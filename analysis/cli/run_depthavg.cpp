@@ -1,6 +1,7 @@
 // granbench run --model depthavg: the depth-averaged mu(I) equations (7.3)-(7.5) with shape
 // factor chi, from (7.2) or the normal mode (7.10), integrated by CVODE; the seeded mode's growth
-// rate and phase speed measured spectrally beside the exact relation (7.11) (chi-generalised),
+// rate and phase speed (and the other waves at its wavenumber) measured by the matrix pencil fit
+// of surface_measurement.hpp beside the exact relation (7.11) (chi-generalised),
 // the paper's estimator (7.12), and the speed of the developed wave by cross-correlation.
 #include <cmath>
 #include <iomanip>
@@ -8,14 +9,15 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "depthavg/initial_state.hpp"
+#include "depthavg/solver.hpp"
 #include "dispersion.hpp"
 #include "growth_estimator_712.hpp"
 #include "hdf5_file.hpp"
-#include "depthavg/initial_state.hpp"
+#include "measurement_json.hpp"
 #include "run_model.hpp"
-#include "depthavg/solver.hpp"
-#include "spectral_growth.hpp"
 #include "steady_state.hpp"
+#include "surface_measurement.hpp"
 #include "wave_speed.hpp"
 
 namespace granbench::cli {
@@ -71,32 +73,28 @@ double parse_frame_speed(const std::string& text, double linear_speed) {
   return v;
 }
 
-// A growth (or decay) rate is reported only when the fitted window spans at least this many
-// e-folds; a saturated wave (e.g. (7.2) at Lx = 8 cm, which saturates within 0.3 s) has none.
-constexpr double min_efolds = 0.1;
-
 struct Measured {
-  std::optional<SpectralGrowth> growth;
-  std::string growth_note;
+  SurfaceMeasurement growth;  // the seeded mode; a reason instead when there is no clean window
   std::optional<Estimate712> e712;
   std::optional<WaveSpeed> wave;
 };
 
-Measured measure(const SurfaceSeries& s, int mode) {
+// The seeded mode is the component nearest the (7.11) phase speed; a saturated wave (e.g. (7.2)
+// at Lx = 8 cm, which saturates within 0.3 s) has no clean linear window and gives a reason.
+Measured measure(const SurfaceSeries& s, int mode, double expected_speed) {
   Measured m;
-  if (s.nt() < 8) return m;
-  try {
-    m.growth = spectral_growth(s, mode);
-    const auto& f = m.growth->amplitude_fit;
-    if (std::fabs(f.slope) * (f.t_last - f.t_first) < min_efolds) {
-      m.growth_note = "no exponential phase: the best linear window of ln|h_k| spans fewer than 0.1 e-folds";
-      m.growth.reset();
-    } else {
-      m.e712 = growth_estimate_712(s, f.t_first, f.t_last);
+  MeasureOptions opt;
+  opt.mode = mode;
+  opt.seeded_phase_speed = expected_speed;
+  m.growth = measure_surface_series(s, opt);
+  if (m.growth.found()) {
+    try {
+      m.e712 = growth_estimate_712(s, m.growth.t_first, m.growth.t_last);
+    } catch (const std::invalid_argument&) {
+      // (7.12) needs max h > h0 throughout the window.
     }
-  } catch (const std::invalid_argument& e) {
-    m.growth_note = e.what();
   }
+  if (s.nt() < 8) return m;
   try {
     m.wave = wave_speed(s, 0.5 * s.t.back(), s.t.back());
   } catch (const std::invalid_argument&) {
@@ -150,7 +148,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   const depthavg::RunResult r = solver.run(U0, out, cb);
   if (progress) std::cerr << "\n";
 
-  const Measured m = measure(r.series, o.mode);
+  const Measured m = measure(r.series, o.mode, exact.phase_speed);
   const auto last_h = r.series.h_at(r.series.nt() - 1);
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / static_cast<double>(last_h.size());
@@ -158,40 +156,39 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
                        : r.status == depthavg::RunStatus::Interrupted ? "interrupted"
                                                                       : "diverged";
 
-  nlohmann::json j = {
-      {"model", "depthavg"},
-      {"status", status},
-      {"message", r.message},
-      {"t_reached", r.t_reached},
-      {"steps", r.stats.steps},
-      {"rhs_evals", r.stats.total_rhs_evals()},
-      {"linear_iterations", r.stats.linear_iterations},
-      {"preconditioner_evals", r.stats.preconditioner_evals},
-      {"wall_seconds", r.wall_seconds},
-      {"mass_error", r.mass_error()},
-      {"h_mean", h_mean},
-      {"flux", r.flux_final},
-      {"chi", chi},
-      {"growth_rate", m.growth ? number_or_null(m.growth->growth_rate) : nullptr},
-      {"phase_speed", m.growth ? number_or_null(m.growth->phase_speed) : nullptr},
-      {"growth_rate_exact", exact.growth_rate},
-      {"phase_speed_exact", exact.phase_speed},
-      {"growth_rate_712", m.e712 ? number_or_null(m.e712->growth_rate) : nullptr},
-      {"growth_window", m.growth ? nlohmann::json{m.growth->amplitude_fit.t_first,
-                                                  m.growth->amplitude_fit.t_last}
-                                 : nullptr},
-      {"growth_fit_r2", m.growth ? number_or_null(m.growth->amplitude_fit.r2) : nullptr},
-      {"growth_fit_rms", m.growth ? number_or_null(m.growth->amplitude_fit.rms_residual) : nullptr},
-      {"growth_window_found", m.growth ? nlohmann::json(m.growth->window_found) : nullptr},
-      {"growth_note", m.growth_note},
-      {"wave_speed", m.wave ? number_or_null(m.wave->speed) : nullptr},
-      {"wave_speed_spread", m.wave ? number_or_null(m.wave->spread) : nullptr},
-      {"dt_out", out.dt_out},
-      {"frame_speed", space.frame_speed},
-      {"F", base.Fr},
-      {"R", base.R},
-      {"Gamma", base.Gamma},
-      {"u_mean", base.u_mean}};
+  nlohmann::json j = {{"model", "depthavg"},
+                      {"status", status},
+                      {"message", r.message},
+                      {"t_reached", r.t_reached},
+                      {"steps", r.stats.steps},
+                      {"rhs_evals", r.stats.total_rhs_evals()},
+                      {"linear_iterations", r.stats.linear_iterations},
+                      {"preconditioner_evals", r.stats.preconditioner_evals},
+                      {"wall_seconds", r.wall_seconds},
+                      {"mass_error", r.mass_error()},
+                      {"h_mean", h_mean},
+                      {"flux", r.flux_final},
+                      {"chi", chi},
+                      {"growth_rate", number_or_null(m.growth.growth_rate)},
+                      {"phase_speed", number_or_null(m.growth.phase_speed)},
+                      {"modes", modes_json(m.growth)},
+                      {"growth_rate_exact", exact.growth_rate},
+                      {"phase_speed_exact", exact.phase_speed},
+                      {"growth_rate_712", m.e712 ? number_or_null(m.e712->growth_rate) : nullptr},
+                      {"growth_window", window_json(m.growth)},
+                      {"growth_fit_residual", number_or_null(m.growth.relative_residual)},
+                      {"growth_fit_r2", number_or_null(m.growth.log_amplitude_r2)},
+                      {"growth_window_found", m.growth.found()},
+                      {"growth_note", m.growth.reason},
+                      {"growth_data_note", m.growth.note},
+                      {"wave_speed", m.wave ? number_or_null(m.wave->speed) : nullptr},
+                      {"wave_speed_spread", m.wave ? number_or_null(m.wave->spread) : nullptr},
+                      {"dt_out", out.dt_out},
+                      {"frame_speed", space.frame_speed},
+                      {"F", base.Fr},
+                      {"R", base.R},
+                      {"Gamma", base.Gamma},
+                      {"u_mean", base.u_mean}};
 
   if (!o.output.out.empty()) {
     H5Writer h5(o.output.out);
@@ -242,11 +239,19 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
               << exact.phase_speed << "\n"
               << "  wave speed       " << show(j["wave_speed"]) << " m/s (cross-correlation, "
               << "second half of the run)\n";
-    if (!m.growth_note.empty()) std::cout << "  growth rate not measured: " << m.growth_note << "\n";
-    if (m.growth)
-      std::cout << "  growth window    " << m.growth->amplitude_fit.t_first << " .. "
-                << m.growth->amplitude_fit.t_last << " s, R^2 = " << m.growth->amplitude_fit.r2
-                << (m.growth->window_found ? "" : " (no window met the linearity test)") << "\n";
+    if (!m.growth.found()) std::cout << "  growth rate not measured: " << m.growth.reason << "\n";
+    if (m.growth.found()) {
+      std::cout << "  growth window    " << m.growth.t_first << " .. " << m.growth.t_last << " s, "
+                << m.growth.modes.size() << " wave(s) fitted, relative residual "
+                << m.growth.relative_residual << "\n";
+      for (std::size_t i = 0; i < m.growth.modes.size(); ++i)
+        if (i != m.growth.seeded)
+          std::cout << "  other wave       growth " << m.growth.modes[i].growth_rate
+                    << " 1/s, speed " << m.growth.modes[i].phase_speed << " m/s, amplitude "
+                    << m.growth.modes[i].amplitude * 1e3
+                    << " mm (seeded: " << m.growth.modes[m.growth.seeded].amplitude * 1e3
+                    << " mm)\n";
+    }
   }
   if (r.status == depthavg::RunStatus::Interrupted)
     throw CommandFailed(r.message + "; the samples computed so far were kept", 130);

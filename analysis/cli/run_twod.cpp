@@ -27,10 +27,11 @@
 #include "hdf5_file.hpp"
 #include "initial_state.hpp"
 #include "linear2d_eigenmode.hpp"
+#include "measurement_json.hpp"
 #include "output.hpp"
 #include "solver.hpp"
-#include "spectral_growth.hpp"
 #include "steady_state.hpp"
+#include "surface_measurement.hpp"
 #include "wave_speed.hpp"
 
 namespace granbench::cli {
@@ -153,10 +154,17 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
   // --- initial state ---
   // sine: (7.2); eigenmode: the least-stable surface mode of the exact 2D linear theory at this
   // wavelength, amplitude a0 (analysis/comparison/eigenmode_seed.hpp).
-  const InitialCondition ic =
-      o.init == "eigenmode"
-          ? eigenmode_initial_condition(linear2d::surface_eigenmode(base, curve, wavelength), o.a0)
-          : perturbed_bagnold(base, o.a0, wavelength);
+  // The surface mode's phase speed also identifies the seeded wave among the waves the
+  // measurement separates (a sine start projects mostly onto it, too).
+  std::optional<linear2d::Eigenmode> eigenmode;
+  try {
+    eigenmode = linear2d::surface_eigenmode(base, curve, wavelength);
+  } catch (const std::exception&) {
+    if (o.init == "eigenmode") throw;
+  }
+  const double seeded_speed = eigenmode ? eigenmode->phase_speed() : NAN;
+  const InitialCondition ic = o.init == "eigenmode" ? eigenmode_initial_condition(*eigenmode, o.a0)
+                                                    : perturbed_bagnold(base, o.a0, wavelength);
   Solver solver(grid, params, restart ? restart->state : make_initial_state(grid, ic, params));
   SurfaceSeries series = SurfaceSeries::uniform_grid(o.Lx, o.nx, o.flow.h0);
   if (restart) {
@@ -231,13 +239,12 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
 
   // --- results ---
   const RunStatistics st = solver.statistics();
-  std::optional<SpectralGrowth> growth;
+  MeasureOptions measure_opt;
+  measure_opt.mode = o.mode;
+  measure_opt.seeded_phase_speed = seeded_speed;
+  const SurfaceMeasurement growth = measure_surface_series(series, measure_opt);
   std::optional<WaveSpeed> wave;
   if (series.nt() >= 8) {
-    try {
-      growth = spectral_growth(series, o.mode);
-    } catch (const std::invalid_argument&) {
-    }
     try {
       wave = wave_speed(series, 0.5 * series.t.back(), series.t.back());
     } catch (const std::invalid_argument&) {
@@ -263,11 +270,15 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
       {"dt_max", st.dt_max},
       {"h_mean", h_mean},
       {"flux", mean_flux(grid, solver.state())},
-      {"growth_rate", growth ? number_or_null(growth->growth_rate) : nullptr},
-      {"phase_speed", growth ? number_or_null(growth->phase_speed) : nullptr},
-      {"growth_window", growth ? nlohmann::json{growth->amplitude_fit.t_first, growth->amplitude_fit.t_last}
-                               : nullptr},
-      {"growth_window_found", growth ? nlohmann::json(growth->window_found) : nullptr},
+      {"growth_rate", number_or_null(growth.growth_rate)},
+      {"phase_speed", number_or_null(growth.phase_speed)},
+      {"modes", modes_json(growth)},
+      {"phase_speed_theory", number_or_null(seeded_speed)},
+      {"growth_window", window_json(growth)},
+      {"growth_window_found", growth.found()},
+      {"growth_fit_residual", number_or_null(growth.relative_residual)},
+      {"growth_note", growth.reason},
+      {"growth_data_note", growth.note},
       {"wave_speed", wave ? number_or_null(wave->speed) : nullptr},
       {"wave_speed_spread", wave ? number_or_null(wave->spread) : nullptr},
       {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nullptr},
@@ -295,17 +306,25 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     print_json(j);
   } else {
     auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
-    std::cout << "twod run (" << status << "), " << o.flow.curve << " curve, angle " << o.flow.angle_deg
-              << " deg, h0 = " << o.flow.h0 << " m, " << grid.nx << " x " << grid.nz << " cells on "
-              << grid.Lx << " x " << grid.Lz << " m\n"
+    std::cout << "twod run (" << status << "), " << o.flow.curve << " curve, angle "
+              << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, " << grid.nx << " x "
+              << grid.nz << " cells on " << grid.Lx << " x " << grid.Lz << " m\n"
               << "  t reached        " << solver.state().t << " s in " << wall() << " s wall, "
               << st.steps << " steps\n"
               << "  mass error       " << st.mass_error() << " (relative)\n"
               << "  h mean, flux     " << h_mean << " m, " << j["flux"].get<double>() << " m^2/s\n"
               << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
-              << show("phase_speed") << " m/s\n"
-              << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
-              << "  I range          " << (std::isfinite(I_lo) ? std::to_string(I_lo) + " .. " + std::to_string(I_hi) : "-")
+              << show("phase_speed") << " m/s"
+              << (growth.found() ? "" : "  (not measured: " + growth.reason + ")") << "\n";
+    for (std::size_t i = 0; i < growth.modes.size(); ++i)
+      if (i != growth.seeded)
+        std::cout << "  other wave       growth " << growth.modes[i].growth_rate << " 1/s, speed "
+                  << growth.modes[i].phase_speed << " m/s, amplitude "
+                  << growth.modes[i].amplitude * 1e3 << " mm (seeded "
+                  << growth.modes[growth.seeded].amplitude * 1e3 << " mm)\n";
+    std::cout << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
+              << "  I range          "
+              << (std::isfinite(I_lo) ? std::to_string(I_lo) + " .. " + std::to_string(I_hi) : "-")
               << ", ill-posed fraction " << rs.illposed_fraction << " (max " << ill_max << ")\n";
   }
   if (status == "interrupted") throw CommandFailed(message + "; the samples computed so far were kept", 130);

@@ -20,19 +20,19 @@ double half_range(std::span<const double> h) {
 
 }  // namespace
 
-Measurement measure(const SurfaceSeries& s) {
+Measurement measure(const SurfaceSeries& s, const MeasureOptions& opt) {
   Measurement m;
+  m.spectral = measure_surface_series(s, opt);
   if (s.nt() < 3) return m;
-  m.spectral = spectral_growth(s, 1);
   std::vector<double> log_amplitude;
-  for (const auto& a : mode_amplitudes(s, 1)) log_amplitude.push_back(std::log(std::abs(a)));
+  for (const auto& a : mode_amplitudes(s, opt.mode)) log_amplitude.push_back(std::log(std::abs(a)));
   m.whole_run = fit_line(s.t, log_amplitude, s.nt() / 10, s.nt() - 1);
-  try {
-    m.growth_712 = growth_estimate_712(s, m.spectral.amplitude_fit.t_first,
-                                       m.spectral.amplitude_fit.t_last)
-                       .growth_rate;
-  } catch (const std::invalid_argument&) {
-    // (7.12) needs max h > h0 throughout the window; a decaying mode can violate that.
+  if (m.spectral.found()) {
+    try {
+      m.growth_712 = growth_estimate_712(s, m.spectral.t_first, m.spectral.t_last).growth_rate;
+    } catch (const std::invalid_argument&) {
+      // (7.12) needs max h > h0 throughout the window; a decaying mode can violate that.
+    }
   }
   const std::size_t last = s.nt() - 1;
   m.final_amplitude = half_range(s.h_at(last));

@@ -3,9 +3,11 @@
 //   exact          the paper's depth-averaged relation (7.11) (shape factor chi = 1);
 //   exact_bagnold  the same with the Bagnold shape factor chi = 5/4 (DESIGN.md §10);
 //   exact_2d       the full 2D linear stability of the Bagnold flow (linear_stability_2d.hpp).
-// Each model is measured by the spectral growth rate and phase speed of the seeded mode
-// (spectral_growth.hpp), the paper's estimator (7.12) over the same window, and, when the wave has
-// saturated, the nonlinear wave speed (wave_speed.hpp) and amplitude.
+// Each model is measured by the growth rate and phase speed of the seeded mode and of the other
+// waves at its wavenumber (matrix pencil fit of h_k(t), surface_measurement.hpp; the seeded one
+// is identified by the phase speed of the model's own theory), the paper's estimator (7.12) over
+// the same window, and, when the wave has saturated, the nonlinear wave speed (wave_speed.hpp)
+// and amplitude.
 #pragma once
 
 #include <optional>
@@ -13,6 +15,7 @@
 #include "chute_case.hpp"
 #include "model_runs.hpp"
 #include "spectral_growth.hpp"
+#include "surface_measurement.hpp"
 
 namespace granbench {
 
@@ -22,18 +25,20 @@ struct TheoryValue {
 };
 
 struct Measurement {
-  SpectralGrowth spectral;
+  SurfaceMeasurement spectral;  // the seeded mode and the other waves at its wavenumber
   // ln|h_k| fitted over the whole run after the first tenth: robust where the automatic window is
   // not (a beating of two waves at the seeded wavenumber, as the 2D runs show).
   LinearFit whole_run;
-  std::optional<double> growth_712;   // (7.12) averaged over the spectral fit's window
+  std::optional<double> growth_712;   // (7.12) averaged over the spectral fit's window, if any
   bool saturated = false;             // amplitude steady over the last fifth of the run
   std::optional<double> wave_speed;   // [m/s], when saturated
   std::optional<double> amplitude;    // (max h - min h)/2 at the end [m], when saturated
   double final_amplitude = 0.0;       // (max h - min h)/2 at the end [m]
 };
 
-Measurement measure(const SurfaceSeries& s);
+// The same measurement as `granbench run`'s (measure_surface_series with opt), plus the
+// comparison's extras. opt.seeded_phase_speed: the model's own theory's phase speed.
+Measurement measure(const SurfaceSeries& s, const MeasureOptions& opt = {});
 
 struct Theories {
   double k_hat = 0.0;

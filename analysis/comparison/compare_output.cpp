@@ -2,6 +2,7 @@
 #include "compare_output.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "hdf5_file.hpp"
 
@@ -12,12 +13,23 @@ namespace {
 void write_measurement(H5Writer& out, const std::string& g, const ModelRun& r,
                        const Measurement& m) {
   write_surface_series(out, g, r.series);
-  out.attribute(g, "growth_rate", m.spectral.growth_rate);
-  out.attribute(g, "phase_speed", m.spectral.phase_speed);
-  out.attribute(g, "fit_t_first", m.spectral.amplitude_fit.t_first);
-  out.attribute(g, "fit_t_last", m.spectral.amplitude_fit.t_last);
-  out.attribute(g, "fit_intercept", m.spectral.amplitude_fit.intercept);
-  out.attribute(g, "fit_r2", m.spectral.amplitude_fit.r2);
+  const SurfaceMeasurement& w = m.spectral;
+  out.attribute(g, "growth_rate", w.growth_rate);  // NaN when no clean window (see reason)
+  out.attribute(g, "phase_speed", w.phase_speed);
+  out.attribute(g, "fit_t_first", w.t_first);
+  out.attribute(g, "fit_t_last", w.t_last);
+  // ln|h_k| of the seeded component = fit_intercept + growth_rate t, in FFTW's unnormalised
+  // units (|h_k| = amplitude nx / 2), for the plot.
+  const double raw = w.found() ? w.modes[w.seeded].amplitude * double(r.series.nx()) / 2.0 : NAN;
+  out.attribute(g, "fit_intercept", std::log(raw) - w.growth_rate * w.t_first);
+  out.attribute(g, "fit_residual", w.relative_residual);
+  out.attribute(g, "fit_reason", w.reason);
+  // The fitted waves, largest first: rows of (growth rate [1/s], phase speed [m/s],
+  // amplitude at the window start [m]).
+  std::vector<double> rows;
+  for (const WaveMode& v : w.modes)
+    rows.insert(rows.end(), {v.growth_rate, v.phase_speed, v.amplitude});
+  if (!rows.empty()) out.write(g + "/modes", rows, {w.modes.size(), 3});
   out.attribute(g, "growth_rate_712", m.growth_712.value_or(NAN));
   out.attribute(g, "wave_speed", m.wave_speed.value_or(NAN));
   out.attribute(g, "amplitude", m.amplitude.value_or(NAN));

@@ -54,9 +54,9 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.growth_rate_712 = NAN;
   p.growth_rate_exact = r.exact.growth_rate;
   p.phase_speed_exact = r.exact.phase_speed;
-  p.window_start = r.measured.amplitude_fit.t_first;
-  p.window_end = r.measured.amplitude_fit.t_last;
-  p.fit_r2 = r.measured.amplitude_fit.r2;
+  p.window_start = r.measured.t_first;
+  p.window_end = r.measured.t_last;
+  p.fit_r2 = r.measured.log_amplitude_r2;
   p.steps = static_cast<double>(r.stats.steps);
   p.mass_error = r.mass_error;
   p.wall_seconds = r.wall_seconds;
@@ -69,7 +69,11 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
   const ModelRun r = p.model == "twod" ? run_twod(c, spec.twod_settings, ctl)
                                        : run_depthavg(c, spec.depthavg_settings, ctl);
-  const Measurement m = measure(r.series);
+  MeasureOptions opt;
+  opt.seeded_phase_speed = p.model == "twod"                   ? p.theory.exact_2d.phase_speed
+                           : spec.depthavg_settings.chi != 1.0 ? p.theory.exact_bagnold.phase_speed
+                                                               : p.theory.exact.phase_speed;
+  const Measurement m = measure(r.series, opt);
   p.growth_rate = m.spectral.growth_rate;
   p.phase_speed = m.spectral.phase_speed;
   p.growth_rate_712 = m.growth_712.value_or(NAN);
@@ -82,14 +86,16 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
     p.growth_rate_exact = t.growth_rate;
     p.phase_speed_exact = t.phase_speed;
   }
-  p.window_start = m.spectral.amplitude_fit.t_first;
-  p.window_end = m.spectral.amplitude_fit.t_last;
-  p.fit_r2 = m.spectral.amplitude_fit.r2;
+  p.window_start = m.spectral.t_first;
+  p.window_end = m.spectral.t_last;
+  p.fit_r2 = m.spectral.log_amplitude_r2;
   p.steps = static_cast<double>(r.steps);
   p.mass_error = r.mass_error;
   p.wall_seconds = r.wall_seconds;
   p.completed = r.outcome == RunOutcome::Completed;
   p.message = r.message;
+  if (!m.spectral.found())
+    p.message += (p.message.empty() ? "" : "; ") + ("no growth rate: " + m.spectral.reason);
 }
 
 SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& ctl) {

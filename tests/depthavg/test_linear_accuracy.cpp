@@ -34,7 +34,7 @@ TEST(DepthAvgLinear, GrowthAndSpeedMatchExactAcrossUnstableBandAndBeyondCutoff) 
   for (double Lx : {1.5 * Lc, 0.05, 0.12, 0.4, 0.6 * Lc}) {
     const auto r = depthavg::linear_run(s, curve, 1.0, Lx, p);
     ASSERT_TRUE(r.ok) << r.message;
-    EXPECT_TRUE(r.measured.window_found);
+    EXPECT_TRUE(r.measured.found()) << r.measured.reason;
     EXPECT_EQ(r.exact.growth_rate > 0.0, Lx > Lc);
     EXPECT_LT(r.growth_relative_error(), 5e-3)
         << "Lx " << Lx << ": measured " << r.measured.growth_rate << ", exact " << r.exact.growth_rate;

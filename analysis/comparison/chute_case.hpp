@@ -39,7 +39,8 @@ struct RunControl {
   const std::atomic<bool>* stop = nullptr;
 };
 
-// The sampling interval: automatic value resolves the phase of the wave (|c| dt << Lx).
+// The sampling interval: the automatic value resolves the phase of the wave (|c| dt << Lx) and
+// divides t_end into whole samples.
 double sampling_interval(const ChuteCase& c, double wave_speed_estimate);
 
 }  // namespace granbench

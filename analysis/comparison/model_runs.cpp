@@ -30,7 +30,10 @@ namespace granbench {
 double sampling_interval(const ChuteCase& c, double wave_speed_estimate) {
   if (c.dt_out > 0.0) return c.dt_out;
   const double period = c.Lx / std::max(std::fabs(wave_speed_estimate), 1e-6);
-  return std::min(0.02, period / 20.0);
+  const double dt = std::min(0.02, period / 20.0);
+  // a whole number of samples up to t_end, so that the last one is on the uniform grid the
+  // measurement needs (surface_measurement.hpp)
+  return c.t_end / std::ceil(c.t_end / dt - 1e-9);
 }
 
 namespace {

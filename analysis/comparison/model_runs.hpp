@@ -3,6 +3,8 @@
 // wall_seconds, mass_error, flux, and for the 2D model the range of I and the ill-posed fraction).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -43,6 +45,12 @@ struct TwodSettings {
   double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
   int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
   int viscosity_passes = 1;     // Picard passes for eta per step (twod/parameters.hpp)
+  // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep
+  // keeps that dx at every Lx, so that every point has the resolution the preset was judged at.
+  static constexpr double reference_length = 0.08;
+  int cells_along(double Lx) const {
+    return std::max(16, static_cast<int>(std::lround(nx * Lx / reference_length)));
+  }
   double domain_height(double h0) const {
     return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);
   }

@@ -67,8 +67,10 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
 // A point from a seeded run of either model, measured like compare's (compare.hpp).
 void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
-  const ModelRun r = p.model == "twod" ? run_twod(c, spec.twod_settings, ctl)
-                                       : run_depthavg(c, spec.depthavg_settings, ctl);
+  TwodSettings twod = spec.twod_settings;
+  twod.nx = twod.cells_along(c.Lx);  // the preset's dx at every length
+  const ModelRun r =
+      p.model == "twod" ? run_twod(c, twod, ctl) : run_depthavg(c, spec.depthavg_settings, ctl);
   MeasureOptions opt;
   opt.seeded_phase_speed = p.model == "twod"                   ? p.theory.exact_2d.phase_speed
                            : spec.depthavg_settings.chi != 1.0 ? p.theory.exact_bagnold.phase_speed

@@ -18,8 +18,9 @@ STYLE = {"depthavg": ("tab:blue", "depth-averaged"), "twod": ("tab:red", "2D")}
 
 
 def mode_amplitude(x, h, Lx):
+    # the wave's amplitude in metres, 2 |h_k| / n, so that models on different grids compare
     k = 2 * np.pi / Lx
-    return np.abs((h * np.exp(-1j * k * x)[None, :]).sum(axis=1))
+    return 2.0 / len(x) * np.abs((h * np.exp(-1j * k * x)[None, :]).sum(axis=1))
 
 
 def main(data, png):
@@ -42,7 +43,8 @@ def main(data, png):
         a = r["attrs"]
         t0, t1 = a["fit_t_first"], a["fit_t_last"]
         tt = np.linspace(t0, t1, 10)
-        ax[1].plot(tt, a["fit_intercept"] + a["growth_rate"] * tt, "k--", lw=1)
+        # the fit's intercept is ln |h_k| of the unnormalised sum
+        ax[1].plot(tt, a["fit_intercept"] + np.log(2.0 / len(r["x"])) + a["growth_rate"] * tt, "k--", lw=1)
         ax[2].plot(1e2 * r["x"], 1e3 * r["h"][-1], color=color, label=f"{label}, t = {r['t'][-1]:.2f} s")
     ax[0].set(xlabel="t [s]", ylabel=f"h at x = {100 * x_probe:.0f} cm [mm]", title="surface at a probe (fig. 12a)")
     ax[0].legend()
@@ -52,7 +54,7 @@ def main(data, png):
     tt = np.array([0.0, r["t"][-1]])
     for key, style, name in (("exact", ":", "(7.11)"), ("exact_bagnold", "-.", "chi = 5/4"), ("exact_2d", "-", "2D linear")):
         ax[1].plot(tt, amp0 + th[key + "_growth_rate"] * tt, color="0.4", ls=style, lw=0.9, label=f"slope {name}")
-    ax[1].set(xlabel="t [s]", ylabel=r"ln $|\hat h_k|$", title="growth of the seeded mode (dashed: fits)")
+    ax[1].set(xlabel="t [s]", ylabel=r"ln (amplitude of $h_k$ [m])", title="growth of the seeded mode (dashed: fits)")
     ax[1].legend(fontsize=8)
     ax[2].axhline(1e3 * h0, color="0.5", lw=0.8)
     ax[2].set(xlabel="x [cm]", ylabel="h [mm]", title="final wave shapes")

@@ -39,6 +39,7 @@
 
 #include "diagnostics.hpp"
 #include "momentum_advection.hpp"
+#include "surface_row_pressure.hpp"
 #include "time_step.hpp"
 #include "viscosity_pressure.hpp"
 
@@ -105,12 +106,18 @@ double Solver::step(double dt_limit) {
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp)
   update_densities(g_, s_.f, params_.rheology, props_);
-  if (params_.hydrostatic_viscosity_pressure)
-    update_viscosity(g_, s_,
-                     viscosity_pressure(g_, params_, s_.p, h_before_, surface_heights(g_, s_.f)),
-                     model_, props_);
-  else
+  if (params_.hydrostatic_viscosity_pressure) {
+    p_new_level_ = viscosity_pressure(g_, params_, s_.p, h_before_, surface_heights(g_, s_.f));
+    update_viscosity(g_, s_, p_new_level_, model_, props_);
+  } else {
+    p_new_level_ = s_.p;
     update_viscosity(g_, s_, model_, props_);
+  }
+  // the surface row's hydrostatic pressure force (surface_row_pressure.cpp)
+  if (params_.surface_row_pressure)
+    force_u_ = surface_row_pressure_correction(g_, params_, s_.f);
+  else
+    force_u_.clear();
   // 3. momentum predictor
   if (params_.advect_momentum) {
     momentum_advection(g_, s_, adv_u_, adv_w_);
@@ -132,7 +139,8 @@ double Solver::step(double dt_limit) {
     adv_u_.assign(g_.cells(), 0.0);
     adv_w_.assign(g_.w_faces(), 0.0);
   }
-  stats_.viscous_iterations += viscous_.predict(s_, props_, adv_u_, adv_w_, dt, u_star_, w_star_);
+  stats_.viscous_iterations +=
+      viscous_.predict(s_, props_, adv_u_, adv_w_, dt, u_star_, w_star_, force_u_);
   // 4. projection
   if (params_.viscosity_passes > 1) old_ = s_;  // u^n, p^n for the further passes
   stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, s_);
@@ -141,7 +149,7 @@ double Solver::step(double dt_limit) {
     update_viscosity(g_, s_, model_, props_);
     Fields next = old_;
     stats_.viscous_iterations +=
-        viscous_.predict(old_, props_, adv_u_, adv_w_, dt, u_star_, w_star_);
+        viscous_.predict(old_, props_, adv_u_, adv_w_, dt, u_star_, w_star_, force_u_, &s_);
     stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, next);
     s_.u.swap(next.u);
     s_.w.swap(next.w);

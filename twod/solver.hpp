@@ -87,6 +87,8 @@ class Solver {
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
   std::vector<double> adv_u_old_, adv_w_old_;  // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_;               // column heights before the VOF step
+  std::vector<double> p_new_level_;            // p* (viscosity_pressure.cpp)
+  std::vector<double> force_u_;                // surface-row pressure correction per u-face
   double dt_previous_ = 0.0;                   // the last step taken (shortened or not)
   RunStatistics stats_;
 };

@@ -46,7 +46,8 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
 
 int ViscousStep::predict(const Fields& s, const Properties& props, const std::vector<double>& adv_u,
                          const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
-                         std::vector<double>& w_star) {
+                         std::vector<double>& w_star, const std::vector<double>& force_u,
+                         const Fields* about) {
   const Grid& g = g_;
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
@@ -68,6 +69,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       b_[r] = props.rho_u[c] * V * (s.u[c] / dt - adv_u[c] + gx_) -
               g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
+      if (!force_u.empty()) b_[r] += force_u[c];
     }
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
@@ -77,13 +79,14 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
               g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
     }
-  // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n.
+  // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n (or the iterate `about`).
   if (tangent_) {
+    const Fields& at = about ? *about : s;
     x_old_.resize(op_.size());
     for (int k = 0; k < nz; ++k)
-      for (int i = 0; i < nx; ++i) x_old_[op_.u_index(i, k)] = s.u[g.at(i, k)];
+      for (int i = 0; i < nx; ++i) x_old_[op_.u_index(i, k)] = at.u[g.at(i, k)];
     for (int k = 1; k < nz; ++k)
-      for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = s.w[g.at(i, k)];
+      for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = at.w[g.at(i, k)];
     lagged_c_.resize(props.eta_c.size());
     lagged_n_.resize(props.eta_n.size());
     for (std::size_t c = 0; c < lagged_c_.size(); ++c)

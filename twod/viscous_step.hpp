@@ -17,9 +17,13 @@ class ViscousStep {
   ViscousStep(const Grid& g, const SolverParams& params);
   // Predict (u*, w*) from the state s (u^n, w^n, p^n), the explicit advection adv_u, adv_w and
   // the properties at the new time level. Returns the solver iterations.
+  // force_u (may be empty): an explicit force per u-face [N per unit width], added to the
+  // right-hand side. about: the velocity the stress is linearised about (viscosity_tangent);
+  // s when null, the provisional new level in further Picard passes.
   int predict(const Fields& s, const Properties& props, const std::vector<double>& adv_u,
               const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
-              std::vector<double>& w_star);
+              std::vector<double>& w_star, const std::vector<double>& force_u = {},
+              const Fields* about = nullptr);
   const SolveStats& stats() const { return solver_.stats(); }
   // The last predictor increment u* - u^n and its step: the next initial guess is
   // u^n + (dt / dt_previous) increment. Kept in checkpoints so that a restart is exact.
@@ -35,12 +39,12 @@ class ViscousStep {
   double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
   LinearSolverKind kind_;
   double tol_;
-  bool tangent_;    // SolverParams::viscosity_tangent
+  bool tangent_;  // SolverParams::viscosity_tangent
   ViscousOperator op_;
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
-  PatternedMatrix A_;  // assembled only for the sparse-matrix preconditioners
+  PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners
   SpdSolver solver_;
-  Eigen::VectorXd b_, x_, x_old_, y_;  // x_old_: u^n as solver unknowns
+  Eigen::VectorXd b_, x_, x_old_, y_;        // x_old_: u^n as solver unknowns
   std::vector<double> lagged_c_, lagged_n_;  // eta - eta_t at cells and corners
   Eigen::VectorXd increment_;  // u* - u^n of the last predict (empty before the first)
   double dt_previous_ = 0.0;

@@ -1,12 +1,13 @@
-// (e) A perturbed layer on a slope where the depth-averaged theory predicts decay relaxes to the
-// flat Bagnold state. At 24 deg with h0 = 4 mm and the regularised curve, F = 0.54 is below the
-// critical 2/3 of (7.11) with chi = 1 (and below 2/sqrt(5) for the Bagnold shape factor 5/4), so
-// every wavelength decays. The layer starts from (7.2) with a0 = 0.1 h0 on Lx = 4 cm; after
-// 1 s the mode-1 amplitude must have decayed exponentially (a straight ln|h_1| fit with a
-// negative rate over the second half), the surface must be flat to within that remaining mode
-// (3% of a0), and the
-// flux must be back at the Bagnold flux (5.5) of the depth h0 within the O(dz^1.5) error of
-// the steady-profile test at this grid.
+// (e) A perturbed layer on a slope where every theory predicts decay relaxes to the flat Bagnold
+// state. At 24 deg with h0 = 4 mm and the regularised curve, F = 0.54 is below the critical 2/3
+// of (7.11) with chi = 1 (and below 2/sqrt(5) for the Bagnold shape factor 5/4), so every
+// wavelength decays; the exact 2D linear stability gives -3.159 1/s at Lx = 4 cm. The layer starts
+// from (7.2) with a0 = 0.1 h0 on a coarse 32 x 16 grid (8 cells per h0, surface on a face); over
+// the second half of 1 s the mode-1 amplitude must decay exponentially (a straight ln|h_1| fit)
+// at the exact 2D rate within 15 % (measured -3.37 1/s; the former first-order step gave -4.24);
+// at 1 s the surface must be flat to within the mode that theory leaves (a0 exp(-3.159 t), with
+// room for the harmonics of this finite amplitude), and the flux back at the Bagnold flux (5.5)
+// of the depth h0 within the O(dz^1.5) error of the steady-profile test at this grid.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "diagnostics.hpp"
 #include "dispersion.hpp"
 #include "initial_state.hpp"
+#include "linear_stability_2d.hpp"
 #include "solver.hpp"
 #include "spectral_growth.hpp"
 #include "steady_state.hpp"
@@ -43,7 +45,8 @@ TEST(StableDecay, PerturbedLayerRelaxesToBagnold) {
     series.append(solver.state().t, surface_heights(g, solver.state().f));
   }
   const auto amp = mode_amplitudes(series, 1);
-  const double a_start = 2.0 * std::abs(amp.front()) / g.nx, a_end = 2.0 * std::abs(amp.back()) / g.nx;
+  const double a_start = 2.0 * std::abs(amp.front()) / g.nx,
+               a_end = 2.0 * std::abs(amp.back()) / g.nx;
   EXPECT_NEAR(a_start, a0, 0.01 * a0);
   EXPECT_LT(a_end, 0.05 * a0);
   for (std::size_t n = 21; n < amp.size(); ++n) EXPECT_LT(std::abs(amp[n]), std::abs(amp[n - 1]));
@@ -54,9 +57,15 @@ TEST(StableDecay, PerturbedLayerRelaxesToBagnold) {
               fit.slope, fit.r2, rate_chi1, rate_chi54);
   EXPECT_LT(fit.slope, 0.0);
   EXPECT_GT(fit.r2, 0.99);
+  Linear2DOptions opt;
+  opt.N_check = 0;
+  const double rate_2d = linear_stability_2d(steady, curve, Lx, opt).surface.growth_rate;
+  ASSERT_LT(rate_2d, 0.0);
+  EXPECT_NEAR(fit.slope, rate_2d, 0.15 * std::abs(rate_2d));
 
   const auto h = surface_heights(g, solver.state().f);
-  for (double v : h) EXPECT_NEAR(v, h0, 0.03 * a0);  // what is left is the decaying mode
+  const double left = a0 * std::exp(rate_2d * solver.state().t);  // 0.042 a0 at 1 s
+  for (double v : h) EXPECT_NEAR(v, h0, 1.5 * left);  // what is left is the decaying mode
   EXPECT_NEAR(mean_flux(g, solver.state()), steady.u_mean * h0, 0.02 * steady.u_mean * h0);
   EXPECT_LT(std::abs(solver.statistics().mass_error()), 1e-12);
 }

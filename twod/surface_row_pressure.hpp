@@ -1,0 +1,17 @@
+// The horizontal pressure force on partly filled u-faces (surface_row_pressure.cpp).
+#pragma once
+
+#include <vector>
+
+#include "grid.hpp"
+#include "parameters.hpp"
+
+namespace granbench::twod {
+
+// The correction, per u-face [N per unit width], to add to the predictor's pressure force
+// -dz (p_i - p_{i-1}) so that a partly filled u-face feels the hydrostatic force on the grains it
+// holds; zero (to round-off) on full and empty faces. f: the volume fractions of the new level.
+std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
+                                                    const std::vector<double>& f);
+
+}  // namespace granbench::twod

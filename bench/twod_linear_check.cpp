@@ -40,6 +40,7 @@
 #include "linear2d_operator.hpp"
 #include "linear2d_spectrum.hpp"
 #include "linear_stability_2d.hpp"
+#include "run.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 
@@ -205,12 +206,13 @@ int main(int argc, char** argv) {
   const double dt_out = a.num("dt_out", std::min(0.004, period / 16.0));
   std::vector<double> ts, lnA, ph, flux;
   std::vector<cd> hm;
-  auto sample = [&] {
-    const auto h = twod::surface_heights(grid, solver.state().f);
+  // Each sample of the run (twod/run.hpp): h_m, ln|h_m|, the unwrapped phase and the mean flux.
+  auto record = [&](const twod::Solver& sv, const SurfaceSeries& series) {
+    const auto h = series.h_at(series.nt() - 1);
     cd c = 0.0;
     for (int i = 0; i < nx; ++i) c += h[i] * std::polar(1.0, -k * grid.xc(i));
     c *= 2.0 / nx;
-    ts.push_back(solver.state().t);
+    ts.push_back(sv.state().t);
     hm.push_back(c);
     lnA.push_back(std::log(std::abs(c)));
     double phase = std::arg(c);
@@ -219,20 +221,17 @@ int main(int argc, char** argv) {
       while (phase - ph.back() < -std::numbers::pi) phase += 2 * std::numbers::pi;
     }
     ph.push_back(phase);
-    flux.push_back(twod::mean_flux(grid, solver.state()));
+    flux.push_back(twod::mean_flux(grid, sv.state()));
   };
-  sample();
+  twod::RunSchedule schedule;
+  schedule.t_end = t_end;
+  schedule.dt_out = dt_out;
+  twod::RunHooks hooks;
+  hooks.sample = record;
   const auto wall_start = std::chrono::steady_clock::now();
-  std::string status = "completed";
-  const int ns = int(std::ceil(t_end / dt_out - 1e-9));
-  try {
-    for (int i = 1; i <= ns; ++i) {
-      solver.advance_to(std::min(t_end, i * dt_out));
-      sample();
-    }
-  } catch (const std::exception& e) {
-    status = e.what();
-  }
+  const twod::RunResult run = twod::run(
+      solver, SurfaceSeries::uniform_grid(Lx, static_cast<std::size_t>(nx), h0), schedule, hooks);
+  const std::string status = run.completed() ? "completed" : run.message;
   const double t_fit0 = a.num("t_fit0", 0.0);
   std::vector<double> tf, lf, pf;
   std::vector<cd> hf;

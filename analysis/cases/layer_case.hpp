@@ -41,7 +41,7 @@ struct LayerCaseResult {
   nlohmann::json summary;
 };
 
-// Runs every layer run (up to `jobs` at once); a stop request ends them all at the next step.
+// Runs every layer run (up to `jobs` at once); a stop request ends them all at their next sample.
 LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
                                const std::atomic<bool>* stop, bool progress);
 

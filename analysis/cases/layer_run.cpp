@@ -1,8 +1,7 @@
 // The uniform-layer run of §5.2 and §6.2 (layer_run.hpp): initial Bagnold state of one curve and
-// slope, time loop of the 2D solver with evenly spaced samples, divergence and stop handling.
+// slope, then the 2D run (twod/run.hpp) with evenly spaced samples, each recorded here.
 #include "layer_run.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -10,6 +9,7 @@
 #include "diagnostics.hpp"
 #include "initial_state.hpp"
 #include "properties.hpp"
+#include "run.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 
@@ -72,40 +72,26 @@ LayerRunRecord run_layer(const LayerRunSpec& spec, const LayerRunProgress& progr
   r.initial_I = initial.I_zeta;
   for (int k = 0; k < grid.nz; ++k) r.z.push_back(grid.zc(k));
 
-  const auto wall0 = std::chrono::steady_clock::now();
-  auto wall = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  // Samples at n t_end / (samples - 1) (twod/run.hpp); the SurfaceSeries it keeps is not used.
+  twod::RunSchedule schedule;
+  schedule.t_end = spec.t_end;
+  schedule.dt_out = spec.t_end / std::max(1, spec.samples - 1);
+  twod::RunHooks hooks;
+  hooks.stop = progress.stop;
+  hooks.sample = [&](const twod::Solver& s, const SurfaceSeries&) {
+    take_sample(s, r);
+    if (progress.report) progress.report(r, s.state().t);
   };
-  const double dt_sample = spec.t_end / std::max(1, spec.samples - 1);
-  take_sample(solver, r);
-  double last_report = 0.0;
-  try {
-    for (int n = 1; n < spec.samples; ++n) {
-      const double t_sample = n * dt_sample;
-      while (solver.state().t < t_sample * (1.0 - 1e-12)) {
-        if (progress.stop && progress.stop->load()) {
-          r.status = "interrupted";
-          r.message = "interrupted at t = " + std::to_string(solver.state().t) + " s";
-          break;
-        }
-        solver.step(t_sample - solver.state().t);
-        if (progress.report && wall() - last_report > 1.0) {
-          last_report = wall();
-          progress.report(r, solver.state().t);
-        }
-      }
-      if (r.status != "completed") break;
-      take_sample(solver, r);
-    }
-  } catch (const twod::DivergenceError& e) {
-    r.status = "diverged";
-    r.message = e.what();
-  }
+  const twod::RunResult result = twod::run(
+      solver, SurfaceSeries::uniform_grid(spec.Lx, static_cast<std::size_t>(spec.nx), spec.h0),
+      schedule, hooks);
+  r.status = twod::run_status_name(result.status);
+  r.message = result.message;
   const twod::RunStatistics st = solver.statistics();
   r.t_reached = solver.state().t;
   r.steps = st.steps;
   r.mass_error = st.mass_error();
-  r.wall_seconds = wall();
+  r.wall_seconds = result.wall_seconds;
   return r;
 }
 

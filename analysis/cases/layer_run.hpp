@@ -8,7 +8,7 @@
 //
 // At `samples` evenly spaced times in [0, t_end] it records the downslope averages u(z) and I(z)
 // (figures 3, 5, 8b/d) and the 2D field of I (figures 4, 8a/c). A diverging run is caught and
-// recorded with its time, place and quantity; a stop request ends the run at the next step. In
+// recorded with its time, place and quantity; a stop request ends the run at the next sample. In
 // both cases the samples taken so far are kept.
 #pragma once
 
@@ -38,7 +38,7 @@ struct LayerRunSpec {
 
 struct LayerRunRecord {
   std::string label;
-  std::string status = "completed";  // completed, diverged, interrupted
+  std::string status = "completed";  // completed, interrupted, diverged, failed
   std::string message;
   double t_reached = 0.0, wall_seconds = 0.0, mass_error = 0.0;
   long steps = 0;
@@ -56,7 +56,7 @@ struct LayerRunRecord {
 
 struct LayerRunProgress {
   const std::atomic<bool>* stop = nullptr;
-  std::function<void(const LayerRunRecord&, double t)> report;  // called about once a second
+  std::function<void(const LayerRunRecord&, double t)> report;  // called after each sample
 };
 
 LayerRunRecord run_layer(const LayerRunSpec& spec, const LayerRunProgress& progress = {});

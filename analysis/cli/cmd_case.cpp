@@ -5,16 +5,14 @@
 //   granbench case high-speed --resolution smoke   (§6.2, figure 8; the CI version)
 //   granbench case rollwave-8cm --out-dir runs/    (§7, figures 9-12)
 //
-// Each case file names its kind. The uniform-layer cases (decelerating, high-speed) run in this
-// process (analysis/cases/layer_case.hpp). The rollwave and wellposed cases are runs of other
-// subcommands (`run --model twod`, `wellposed`) with the options in the file's [run] table, so
-// the case is exactly what a user would type; they are started as child processes of this
-// binary and their JSON results collected. Every case writes <out-dir>/<name>*.h5 and draws its
-// figures as <out-dir>/<name>_*.png with the scripts in analysis/plots.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
+// Each case file names its kind. Every case runs in this process, under the Ctrl-C/SIGTERM
+// handling of `granbench run` (a stop keeps what was computed and exits with code 130): the
+// uniform-layer cases (decelerating, high-speed) through analysis/cases/layer_case.hpp, the
+// rollwave cases as `run --model twod` with the options in the file's [run] table (so the case is
+// exactly what a user would type; run_twod.hpp), the wellposed case as `wellposed` for each of its
+// curves. Every case writes <out-dir>/<name>*.h5 and draws its figures as <out-dir>/<name>_*.png
+// with the scripts in analysis/plots.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -24,6 +22,7 @@
 #include "commands.hpp"
 #include "layer_case.hpp"
 #include "run_model.hpp"
+#include "run_twod.hpp"
 
 namespace granbench::cli {
 
@@ -39,34 +38,6 @@ struct CaseOptions {
   OutputOptions output;
 };
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs this binary with `args`; returns its exit code and stdout (stderr passes through, so the
-// child's progress shows).
-std::pair<int, std::string> run_self(const std::vector<std::string>& args) {
-  std::string cmd = quoted(std::filesystem::read_symlink("/proc/self/exe").string());
-  for (const auto& a : args) cmd += " " + quoted(a);
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) throw CommandFailed("cannot start " + cmd, 1);
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 1, out};
-}
-
-nlohmann::json parse_child_json(const std::string& text) {
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const std::exception&) {
-    return nullptr;
-  }
-}
-
 std::string path_in(const CaseOptions& o, const std::string& file) {
   return (std::filesystem::path(o.out_dir) / file).string();
 }
@@ -74,7 +45,7 @@ std::string path_in(const CaseOptions& o, const std::string& file) {
 // The uniform-layer cases: decelerating (§5.2) and high-speed (§6.2).
 nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
   const cases::LayerCaseSpec spec = cases::layer_case_spec(file, o.resolution);
-  const InterruptGuard guard;
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   const cases::LayerCaseResult result =
       cases::run_layer_case(spec, o.jobs, guard.flag(), progress_enabled(o.output));
   const std::string h5 = path_in(o, spec.name + ".h5");
@@ -92,17 +63,50 @@ nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o,
   return j;
 }
 
+// The options of `granbench run` (both models' own included, as on its command line) from the
+// case's [run] table.
+void parse_run_table(const cases::CaseFile& file, const std::string& resolution, RunOptions& run,
+                     TwodOptions& twod) {
+  CLI::App app("the [run] table of a case file");
+  DepthAvgOptions depthavg;
+  add_run_options(app, run);
+  add_depthavg_options(app, depthavg);
+  add_twod_options(app, twod);
+  std::vector<std::string> args;
+  for (const auto& [key, values] : file.table("run", resolution))
+    for (const auto& v : values) args.push_back("--" + key + "=" + v);
+  std::reverse(args.begin(), args.end());  // CLI11 takes a vector of arguments last first
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    throw cases::CaseFileError(file.path() + ": table [run]: " + e.what());
+  }
+}
+
 // The rollwave cases (§7): `granbench run --model twod` with the file's [run] options.
 nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
   const std::string h5 = path_in(o, file.name() + ".h5");
-  std::vector<std::string> args = {"run", "--model", "twod", "--json", "--out", h5};
-  if (o.output.quiet) args.push_back("--quiet");
-  for (const auto& [key, values] : file.table("run", o.resolution))
-    for (const auto& v : values) args.push_back("--" + key + "=" + v);
-  auto [code, text] = run_self(args);
-  exit_code = code;
-  nlohmann::json j = {{"case", file.name()}, {"resolution", o.resolution}, {"run", parse_child_json(text)}};
-  if (!std::filesystem::exists(h5)) return j;  // nothing computed (bad options: reported by the child)
+  RunOptions run;
+  TwodOptions twod;
+  parse_run_table(file, o.resolution, run, twod);
+  run.model = "twod";
+  run.output.json = true;
+  run.output.out = h5;
+  run.output.quiet = o.output.quiet;
+  TwodRunReport report;
+  try {
+    check_run_options(run);
+    const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
+    report = run_twod_model(run, twod, guard.flag());
+  } catch (const UsageError& e) {
+    throw UsageError("case file " + file.path() + ", table [run]: " + e.what());
+  }
+  exit_code = report.status == twod::RunStatus::Completed     ? 0
+              : report.status == twod::RunStatus::Interrupted ? 130
+              : report.status == twod::RunStatus::Diverged    ? 3
+                                                              : 1;
+  if (exit_code != 0) std::cerr << "granbench: " << report.message << "\n";
+  nlohmann::json j = {{"case", file.name()}, {"resolution", o.resolution}, {"run", report.json}};
   const std::string png_prefix = path_in(o, file.name());
   const double probe_x = file.number("probe_x", o.resolution);
   const std::vector<double> window = file.numbers("probe_window", o.resolution);
@@ -116,14 +120,11 @@ nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions&
 }
 
 // The well-posedness figures (1, 2, 7): `granbench wellposed` for each of the file's curves.
-nlohmann::json run_wellposed_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
+nlohmann::json run_wellposed_kind(const cases::CaseFile& file, const CaseOptions& o) {
   nlohmann::json j = {{"case", file.name()}, {"curves", nlohmann::json::object()}};
   for (const auto& curve : file.texts("curves", o.resolution)) {
     const std::string stem = path_in(o, file.name() + "_" + curve);
-    auto [code, text] = run_self({"wellposed", "--curve", curve, "--json", "--out", stem + ".h5",
-                                  "--plot", stem + ".png"});
-    if (code != 0) exit_code = code;
-    j["curves"][curve] = parse_child_json(text);
+    j["curves"][curve] = wellposed_result(curve, stem + ".h5", stem + ".png");
     j["outputs"].push_back(stem + ".h5");
     j["outputs"].push_back(stem + ".png");
   }
@@ -199,7 +200,7 @@ void run_case(const CaseOptions& o) {
     kind = file.text("kind");
     if (kind == "decelerating" || kind == "high-speed") j = run_layer_kind(file, o, exit_code);
     else if (kind == "rollwave") j = run_rollwave_kind(file, o, exit_code);
-    else if (kind == "wellposed") j = run_wellposed_kind(file, o, exit_code);
+    else if (kind == "wellposed") j = run_wellposed_kind(file, o);
     else throw cases::CaseFileError(path + ": key 'kind' = '" + kind +
                                     "'; valid values {decelerating,high-speed,rollwave,wellposed}");
   } catch (const cases::CaseFileError& e) {

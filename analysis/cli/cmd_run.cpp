@@ -24,18 +24,22 @@ std::atomic<bool>& interrupt_flag() {
 }
 extern "C" void on_sigint(int) { interrupt_flag().store(true); }
 using Handler = void (*)(int);
-Handler& previous_handler() {
-  static Handler h = SIG_DFL;
-  return h;
+Handler& previous_handler(int signal) {
+  static Handler on_int = SIG_DFL, on_term = SIG_DFL;
+  return signal == SIGTERM ? on_term : on_int;
 }
 
 }  // namespace
 
-InterruptGuard::InterruptGuard() {
+InterruptGuard::InterruptGuard(Signals signals) : term_(signals == Signals::IntAndTerm) {
   interrupt_flag().store(false);
-  previous_handler() = std::signal(SIGINT, on_sigint);
+  previous_handler(SIGINT) = std::signal(SIGINT, on_sigint);
+  if (term_) previous_handler(SIGTERM) = std::signal(SIGTERM, on_sigint);
 }
-InterruptGuard::~InterruptGuard() { std::signal(SIGINT, previous_handler()); }
+InterruptGuard::~InterruptGuard() {
+  if (term_) std::signal(SIGTERM, previous_handler(SIGTERM));
+  std::signal(SIGINT, previous_handler(SIGINT));
+}
 const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
 
 std::vector<std::string> model_names() { return {"depthavg", "twod"}; }
@@ -82,6 +86,13 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   add_output_options(app, o.output, false);
 }
 
+void check_run_options(const RunOptions& o) {
+  if (!(o.a0 < o.flow.h0))
+    throw UsageError("--a0: " + std::to_string(o.a0) + " out of range; valid range [0, h0)");
+  if (static_cast<std::size_t>(o.mode) > o.nx / 2)
+    throw UsageError("--mode: " + std::to_string(o.mode) + " out of range; valid range [1, nx/2]");
+}
+
 void add_run_command(CLI::App& app) {
   auto run = std::make_shared<RunOptions>();
   auto depthavg = std::make_shared<DepthAvgOptions>();
@@ -92,10 +103,7 @@ void add_run_command(CLI::App& app) {
   add_depthavg_options(*sub, *depthavg);
   add_twod_options(*sub, *twod);
   sub->callback([run, depthavg, twod] {
-    if (!(run->a0 < run->flow.h0))
-      throw UsageError("--a0: " + std::to_string(run->a0) + " out of range; valid range [0, h0)");
-    if (static_cast<std::size_t>(run->mode) > run->nx / 2)
-      throw UsageError("--mode: " + std::to_string(run->mode) + " out of range; valid range [1, nx/2]");
+    check_run_options(*run);
     switch (parse_model(run->model)) {
       case Model::DepthAvg:
         run_depthavg(*run, *depthavg);

@@ -24,11 +24,10 @@ nlohmann::json opt_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-void run_wellposed(const WellposedOptions& o) {
-  const MuCurve curve = o.flow.make_curve();
-  const WellPosednessFigures fig = well_posedness_figures(curve);
+// Writes --out and --plot (when given) and returns the JSON result.
+nlohmann::json wellposed(const WellposedOptions& o, const MuCurve& curve,
+                         const WellPosednessFigures& fig) {
   const WellPosedness& w = fig.analysis;
-
   if (!o.output.out.empty() || !o.output.plot.empty()) {
     const std::string h5 = !o.output.out.empty() ? o.output.out : o.output.plot + ".data.h5";
     {
@@ -42,20 +41,28 @@ void run_wellposed(const WellposedOptions& o) {
       if (o.output.out.empty()) std::filesystem::remove(h5);
     }
   }
-
   nlohmann::json intervals = nlohmann::json::array();
   for (auto [lo, hi] : w.intervals) intervals.push_back({lo, hi});
+  nlohmann::json j;
+  j["curve"] = curve_name(curve.kind());
+  j["I1N"] = opt_json(w.I1N);
+  j["I2N"] = opt_json(w.I2N);
+  j["neutral_points"] = w.neutral;
+  j["well_posed_intervals"] = intervals;
+  j["A_minus"] =
+      curve.junction_I() > 0.0 ? nlohmann::json(curve.A_minus()) : nlohmann::json(nullptr);
+  j["I_max_wellposed"] = w.I_max_wellposed;
+  j["I_max_bound"] = fig.I_max > 0.0 ? nlohmann::json(fig.I_max) : nlohmann::json(nullptr);
+  return j;
+}
+
+void run_wellposed(const WellposedOptions& o) {
+  const MuCurve curve = o.flow.make_curve();
+  const WellPosednessFigures fig = well_posedness_figures(curve);
+  const WellPosedness& w = fig.analysis;
+  const nlohmann::json j = wellposed(o, curve, fig);
   const bool has_low_branch = curve.junction_I() > 0.0;
   if (o.output.json) {
-    nlohmann::json j;
-    j["curve"] = curve_name(curve.kind());
-    j["I1N"] = opt_json(w.I1N);
-    j["I2N"] = opt_json(w.I2N);
-    j["neutral_points"] = w.neutral;
-    j["well_posed_intervals"] = intervals;
-    j["A_minus"] = has_low_branch ? nlohmann::json(curve.A_minus()) : nlohmann::json(nullptr);
-    j["I_max_wellposed"] = w.I_max_wellposed;
-    j["I_max_bound"] = fig.I_max > 0.0 ? nlohmann::json(fig.I_max) : nlohmann::json(nullptr);
     print_json(j);
     return;
   }
@@ -83,6 +90,16 @@ void run_wellposed(const WellposedOptions& o) {
 }
 
 }  // namespace
+
+nlohmann::json wellposed_result(const std::string& curve, const std::string& h5,
+                                const std::string& png) {
+  WellposedOptions o;
+  o.flow.curve = curve;
+  o.output.out = h5;
+  o.output.plot = png;
+  const MuCurve mu = o.flow.make_curve();
+  return wellposed(o, mu, well_posedness_figures(mu));
+}
 
 void add_wellposed_command(CLI::App& app) {
   auto opts = std::make_shared<WellposedOptions>();

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <string>
 
 namespace granbench::cli {
 
@@ -20,5 +22,10 @@ void add_run_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_case_command(CLI::App& app);
+
+// `granbench wellposed --curve CURVE --out H5 --plot PNG --json` in this process: writes the data
+// and the figure and returns the JSON that command prints (used by `case`).
+nlohmann::json wellposed_result(const std::string& curve, const std::string& h5,
+                                const std::string& png);
 
 }  // namespace granbench::cli

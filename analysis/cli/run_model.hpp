@@ -52,16 +52,26 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o);
 double parse_chi(const std::string& text);
 
 // Ctrl-C (SIGINT) raises the flag instead of killing the process while a guard lives, so a run
-// can stop at its next sample and keep what it computed.
+// can stop at its next sample and keep what it computed. With Signals::IntAndTerm, SIGTERM (a
+// batch system's or `kill`'s stop) does the same.
 class InterruptGuard {
  public:
-  InterruptGuard();
+  enum class Signals { Int, IntAndTerm };
+  explicit InterruptGuard(Signals signals = Signals::Int);
   ~InterruptGuard();
   const std::atomic<bool>* flag() const;
+  InterruptGuard(const InterruptGuard&) = delete;
+  InterruptGuard& operator=(const InterruptGuard&) = delete;
+
+ private:
+  bool term_;
 };
 
 // Runs the depth-averaged model; prints the table or JSON, writes --out. Throws CommandFailed
 // (after writing what was computed) when interrupted (exit 130) or diverged (exit 3).
 void run_depthavg(const RunOptions& run, const DepthAvgOptions& model);
+
+// The checks of `run` that span several options (a0 below h0, mode at most nx/2): UsageError.
+void check_run_options(const RunOptions& run);
 
 }  // namespace granbench::cli

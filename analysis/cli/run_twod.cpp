@@ -6,14 +6,15 @@
 //   granbench run --model twod --restart roll.checkpoint.h5 --t-end 10 ...
 //
 // Output: the SurfaceSeries h(x, t) (/surface), 2D snapshots (/snapshots, indexed by the XDMF
-// file), the run statistics and every parameter (/parameters). Ctrl-C or SIGTERM writes a
-// checkpoint and the outputs, then exits with code 130; a diverging run reports time, place and
-// quantity, saves what it computed and exits with code 3.
+// file), the run statistics and every parameter (/parameters). The time loop is twod::run
+// (twod/run.hpp). Ctrl-C or SIGTERM stops the run at its next sample, writes a checkpoint and the
+// outputs, then exits with code 130; a diverging run reports time, place and quantity, saves what
+// it computed and exits with code 3; any other failure in the time loop saves what it computed
+// and exits with code 1.
 #include "run_twod.hpp"
 
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -29,6 +30,7 @@
 #include "linear2d_eigenmode.hpp"
 #include "measurement_json.hpp"
 #include "output.hpp"
+#include "run.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 #include "surface_measurement.hpp"
@@ -37,8 +39,6 @@
 namespace granbench::cli {
 
 namespace {
-
-extern "C" void forward_sigterm(int) { std::raise(SIGINT); }  // SIGTERM behaves like Ctrl-C
 
 std::string replace_extension(const std::string& path, const std::string& ext) {
   return std::filesystem::path(path).replace_extension(ext).string();
@@ -94,7 +94,8 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
       ->check(CLI::ExistingFile);
 }
 
-void run_twod(const RunOptions& o, const TwodOptions& mo) {
+TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
+                             const std::atomic<bool>* stop) {
   using namespace granbench::twod;
   // --- parameters (validated before anything is written) ---
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
@@ -144,8 +145,13 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
   }
   const Grid grid(int(o.nx), mo.nz, o.Lx, Lz);
   const double wavelength = o.Lx / o.mode;
-  const double dt_out = o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface));
-  const double dt_snap = mo.dt_snapshot > 0.0 ? mo.dt_snapshot : o.t_end / 10.0;
+  // The samples and snapshots lie on the grids k dt_out and j dt_snapshot from t = 0
+  // (twod/run.hpp), so a restart with the same options continues the first run's grids.
+  RunSchedule schedule;
+  schedule.t_end = o.t_end;
+  schedule.dt_out =
+      o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface));
+  schedule.dt_snapshot = mo.dt_snapshot > 0.0 ? mo.dt_snapshot : o.t_end / 10.0;
   const std::string checkpoint_path =
       !mo.checkpoint.empty() ? mo.checkpoint
       : !o.output.out.empty() ? replace_extension(o.output.out, ".checkpoint.h5")
@@ -172,11 +178,6 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     solver.set_warm_start(restart->warm_start);
     if (restart->series.nt() > 0) series = restart->series;
   }
-  auto sample = [&] {
-    series.append(solver.state().t, surface_heights(grid, solver.state().f),
-                  depth_averaged_velocity(grid, solver.state()));
-  };
-  if (series.nt() == 0) sample();
 
   std::unique_ptr<H5Writer> h5;
   std::unique_ptr<SnapshotWriter> snaps;
@@ -185,72 +186,52 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     snaps = std::make_unique<SnapshotWriter>(
         *h5, std::filesystem::path(o.output.out).filename().string(),
         replace_extension(o.output.out, ".xdmf"), grid);
-    snaps->write(solver);
   }
 
-  // --- time loop ---
-  const InterruptGuard guard;
-  const auto previous_term = std::signal(SIGTERM, forward_sigterm);
+  // --- time loop (twod/run.hpp) ---
   const bool progress = progress_enabled(o.output);
   const auto wall0 = std::chrono::steady_clock::now();
   auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
-  double next_sample = solver.state().t + dt_out, next_snap = solver.state().t + dt_snap;
-  double I_lo = INFINITY, I_hi = 0.0, ill_max = 0.0, last_report = 0.0;
-  RheologyStats rs;
-  std::string status = "completed", message;
-  try {
-    while (solver.state().t < o.t_end * (1.0 - 1e-12)) {
-      if (guard.flag()->load()) {
-        status = "interrupted";
-        message = "interrupted at t = " + std::to_string(solver.state().t) + " s; checkpoint " + checkpoint_path;
-        break;
-      }
-      const double target = std::min({next_sample, next_snap, o.t_end});
-      solver.step(target - solver.state().t);
-      if (solver.state().t >= target * (1.0 - 1e-12)) {
-        if (solver.state().t >= next_sample * (1.0 - 1e-12)) {
-          sample();
-          rs = rheology_stats(grid, solver.state().f, solver.properties().I_c, curve);
-          if (std::isfinite(rs.I_min)) I_lo = std::min(I_lo, rs.I_min), I_hi = std::max(I_hi, rs.I_max);
-          ill_max = std::max(ill_max, rs.illposed_fraction);
-          next_sample += dt_out;
-        }
-        if (solver.state().t >= next_snap * (1.0 - 1e-12)) {
-          if (snaps) snaps->write(solver);
-          next_snap += dt_snap;
-        }
-      }
-      if (progress && wall() - last_report > 1.0) {
-        last_report = wall();
-        const double t = solver.state().t;
-        std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << t << " / " << o.t_end
-                  << " s, step " << solver.statistics().steps << ", dt " << std::scientific
-                  << std::setprecision(2) << solver.statistics().dt_last << " s, wall "
-                  << std::fixed << std::setprecision(0) << last_report << " s    " << std::flush;
-      }
-    }
-  } catch (const DivergenceError& e) {
-    status = "diverged";
-    message = e.what();
-  }
-  std::signal(SIGTERM, previous_term);
+  double last_report = 0.0;
+  RunHooks hooks;
+  hooks.stop = stop;
+  hooks.sample = [&](const Solver& s, const SurfaceSeries&) {
+    if (!progress || wall() - last_report <= 1.0) return;
+    last_report = wall();
+    std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << s.state().t << " / " << o.t_end
+              << " s, step " << s.statistics().steps << ", dt " << std::scientific
+              << std::setprecision(2) << s.statistics().dt_last << " s, wall " << std::fixed
+              << std::setprecision(0) << last_report << " s    " << std::flush;
+  };
+  // Set also without --out: the snapshot times are part of the step sequence, and a run should
+  // not change with whether its fields are written.
+  hooks.snapshot = [&](const Solver& s) {
+    if (snaps) snaps->write(s);
+  };
+  hooks.checkpoint = [&](const Solver& s, const SurfaceSeries& kept) {
+    write_checkpoint(checkpoint_path, s, kept);
+  };
+  const RunResult res = twod::run(solver, std::move(series), schedule, hooks);
   if (progress) std::cerr << "\n";
-  if (status == "interrupted") write_checkpoint(checkpoint_path, solver, series);
+  const std::string status = run_status_name(res.status);
+  std::string message = res.message;
+  if (res.status == RunStatus::Interrupted) message += "; checkpoint " + checkpoint_path;
 
   // --- results ---
+  const SurfaceSeries& kept = res.series;
   const RunStatistics st = solver.statistics();
   MeasureOptions measure_opt;
   measure_opt.mode = o.mode;
   measure_opt.seeded_phase_speed = seeded_speed;
-  const SurfaceMeasurement growth = measure_surface_series(series, measure_opt);
+  const SurfaceMeasurement growth = measure_surface_series(kept, measure_opt);
   std::optional<WaveSpeed> wave;
-  if (series.nt() >= 8) {
+  if (kept.nt() >= 8) {
     try {
-      wave = wave_speed(series, 0.5 * series.t.back(), series.t.back());
+      wave = wave_speed(kept, 0.5 * kept.t.back(), kept.t.back());
     } catch (const std::invalid_argument&) {
     }
   }
-  const auto last_h = series.h_at(series.nt() - 1);
+  const auto last_h = kept.h_at(kept.nt() - 1);
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / double(last_h.size());
   nlohmann::json j = {
@@ -281,16 +262,16 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
       {"growth_data_note", growth.note},
       {"wave_speed", wave ? number_or_null(wave->speed) : nullptr},
       {"wave_speed_spread", wave ? number_or_null(wave->spread) : nullptr},
-      {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nullptr},
-      {"illposed_fraction", rs.illposed_fraction},
-      {"illposed_fraction_max", ill_max},
+      {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
+      {"illposed_fraction", res.last.illposed_fraction},
+      {"illposed_fraction_max", res.illposed_fraction_max},
       {"eta_max", mo.eta_max},
-      {"dt_out", dt_out},
+      {"dt_out", schedule.dt_out},
       {"F", base.Fr},
       {"u_mean", base.u_mean}};
 
   if (h5) {
-    write_surface_series(*h5, "/surface", series);
+    write_surface_series(*h5, "/surface", kept);
     write_parameters(*h5, "/parameters", grid, params);
     h5->attribute("/", "model", "twod");
     h5->attribute("/", "status", status);
@@ -302,17 +283,33 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     snaps->finish();
     h5->close();
   }
+  TwodRunReport report;
+  report.json = std::move(j);
+  report.status = res.status;
+  report.message = message;
+  report.growth = growth;
+  report.Lz = Lz;
+  return report;
+}
+
+void run_twod(const RunOptions& o, const TwodOptions& mo) {
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
+  const TwodRunReport r = run_twod_model(o, mo, guard.flag());
+  const nlohmann::json& j = r.json;
   if (o.output.json) {
     print_json(j);
   } else {
     auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
-    std::cout << "twod run (" << status << "), " << o.flow.curve << " curve, angle "
-              << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, " << grid.nx << " x "
-              << grid.nz << " cells on " << grid.Lx << " x " << grid.Lz << " m\n"
-              << "  t reached        " << solver.state().t << " s in " << wall() << " s wall, "
-              << st.steps << " steps\n"
-              << "  mass error       " << st.mass_error() << " (relative)\n"
-              << "  h mean, flux     " << h_mean << " m, " << j["flux"].get<double>() << " m^2/s\n"
+    const SurfaceMeasurement& growth = r.growth;
+    std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
+              << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "
+              << o.nx << " x " << mo.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"
+              << "  t reached        " << j["t_reached"].get<double>() << " s in "
+              << j["wall_seconds"].get<double>() << " s wall, " << j["steps"].get<long>()
+              << " steps\n"
+              << "  mass error       " << j["mass_error"].get<double>() << " (relative)\n"
+              << "  h mean, flux     " << j["h_mean"].get<double>() << " m, "
+              << j["flux"].get<double>() << " m^2/s\n"
               << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
               << show("phase_speed") << " m/s"
               << (growth.found() ? "" : "  (not measured: " + growth.reason + ")") << "\n";
@@ -322,13 +319,29 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
                   << growth.modes[i].phase_speed << " m/s, amplitude "
                   << growth.modes[i].amplitude * 1e3 << " mm (seeded "
                   << growth.modes[growth.seeded].amplitude * 1e3 << " mm)\n";
+    const auto& I = j["I_range"];
     std::cout << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
               << "  I range          "
-              << (std::isfinite(I_lo) ? std::to_string(I_lo) + " .. " + std::to_string(I_hi) : "-")
-              << ", ill-posed fraction " << rs.illposed_fraction << " (max " << ill_max << ")\n";
+              << (I.is_null() ? std::string("-")
+                              : std::to_string(I[0].get<double>()) + " .. " +
+                                    std::to_string(I[1].get<double>()))
+              << ", ill-posed fraction " << j["illposed_fraction"].get<double>() << " (max "
+              << j["illposed_fraction_max"].get<double>() << ")\n";
   }
-  if (status == "interrupted") throw CommandFailed(message + "; the samples computed so far were kept", 130);
-  if (status == "diverged") throw CommandFailed(message, 3);
+  throw_unless_completed(r);
+}
+
+void throw_unless_completed(const TwodRunReport& r) {
+  switch (r.status) {
+    case twod::RunStatus::Completed:
+      return;
+    case twod::RunStatus::Interrupted:
+      throw CommandFailed(r.message + "; the samples computed so far were kept", 130);
+    case twod::RunStatus::Diverged:
+      throw CommandFailed(r.message, 3);
+    case twod::RunStatus::Failed:
+      throw CommandFailed(r.message + "; the samples computed so far were kept", 1);
+  }
 }
 
 }  // namespace granbench::cli

@@ -4,10 +4,14 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "parameters.hpp"
+#include "run.hpp"
 #include "run_model.hpp"
+#include "surface_measurement.hpp"
 
 namespace granbench::cli {
 
@@ -30,9 +34,27 @@ struct TwodOptions {
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);
 
-// Runs the 2D model; prints the table or JSON, writes --out (+ .xdmf). Throws CommandFailed
-// after saving what was computed when interrupted (exit 130, with a checkpoint) or diverged
-// (exit 3).
+// One 2D run as `granbench run --model twod --json` reports it.
+struct TwodRunReport {
+  nlohmann::json json;  // the keys printed by --json
+  twod::RunStatus status = twod::RunStatus::Completed;
+  std::string message;        // why it stopped early (with the checkpoint's path)
+  SurfaceMeasurement growth;  // the measurement behind json's growth keys
+  double Lz = 0.0;            // the domain height used [m]
+};
+
+// Validates the options (UsageError), runs the 2D model until t_end or *stop, writes --out
+// (+ .xdmf) and, when stopped, the checkpoint. Prints only the progress line on stderr. Used by
+// `run` and by `case` (the rollwave cases), so both run the same code in this process.
+TwodRunReport run_twod_model(const RunOptions& run, const TwodOptions& model,
+                             const std::atomic<bool>* stop);
+
+// `granbench run --model twod`: run_twod_model under Ctrl-C and SIGTERM handling; prints the
+// table or JSON. Throws CommandFailed after saving what was computed when interrupted (exit 130,
+// with a checkpoint), diverged (exit 3) or failed otherwise (exit 1).
 void run_twod(const RunOptions& run, const TwodOptions& model);
+
+// The exit of a finished 2D run: nothing when completed, else CommandFailed with the code above.
+void throw_unless_completed(const TwodRunReport& report);
 
 }  // namespace granbench::cli

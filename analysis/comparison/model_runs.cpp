@@ -10,7 +10,6 @@
 #include "model_runs.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -23,6 +22,7 @@
 #include "linear_stability_2d.hpp"
 #include "twod/diagnostics.hpp"
 #include "twod/initial_state.hpp"
+#include "twod/run.hpp"
 #include "twod/solver.hpp"
 
 namespace granbench {
@@ -35,16 +35,6 @@ double sampling_interval(const ChuteCase& c, double wave_speed_estimate) {
   // measurement needs (surface_measurement.hpp)
   return c.t_end / std::ceil(c.t_end / dt - 1e-9);
 }
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
 
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl) {
   const MuCurve curve = c.make_curve();
@@ -132,34 +122,28 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
                                   : twod::perturbed_bagnold(base, c.a0, c.Lx);
   twod::Solver solver(grid, params, twod::make_initial_state(grid, ic, params));
 
-  m.series = SurfaceSeries::uniform_grid(c.Lx, static_cast<std::size_t>(s.nx), c.h0);
-  auto sample = [&] {
-    const auto& st = solver.state();
-    m.series.append(st.t, twod::surface_heights(grid, st.f),
-                    twod::depth_averaged_velocity(grid, st));
-  };
   // The 2D linear speed is close to the chi = 5/4 depth-averaged one (DESIGN.md §10).
-  const double dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
-  const auto start = Clock::now();
-  sample();
-  const int n_samples = static_cast<int>(std::ceil(c.t_end / dt_out - 1e-9));
-  for (int n = 1; n <= n_samples; ++n) {
-    if (ctl.stop && ctl.stop->load()) {
-      m.outcome = RunOutcome::Interrupted;
-      m.message = "interrupted at t = " + std::to_string(solver.state().t) + " s";
-      break;
-    }
-    try {
-      solver.advance_to(std::min(c.t_end, n * dt_out));
-    } catch (const twod::DivergenceError& e) {
-      m.outcome = RunOutcome::Diverged;
-      m.message = e.what();
-      break;
-    }
-    sample();
-    if (ctl.progress) ctl.progress("twod", solver.state().t, c.t_end);
-  }
-  m.wall_seconds = seconds_since(start);
+  twod::RunSchedule schedule;
+  schedule.t_end = c.t_end;
+  schedule.dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
+  twod::RunHooks hooks;
+  hooks.stop = ctl.stop;
+  if (ctl.progress)
+    hooks.sample = [&](const twod::Solver& sv, const SurfaceSeries&) {
+      ctl.progress("twod", sv.state().t, c.t_end);
+    };
+  twod::RunResult r =
+      twod::run(solver, SurfaceSeries::uniform_grid(c.Lx, static_cast<std::size_t>(s.nx), c.h0),
+                schedule, hooks);
+  // Any other failure (a linear solve, memory) stays an error here: ModelRun has no outcome for
+  // it, and a comparison with half a model is no result.
+  if (r.status == twod::RunStatus::Failed) throw std::runtime_error("twod run: " + r.message);
+  m.outcome = r.status == twod::RunStatus::Completed     ? RunOutcome::Completed
+              : r.status == twod::RunStatus::Interrupted ? RunOutcome::Interrupted
+                                                         : RunOutcome::Diverged;
+  m.message = r.message;
+  m.series = std::move(r.series);
+  m.wall_seconds = r.wall_seconds;
   const auto stats = solver.statistics();
   m.steps = stats.steps;
   m.mass_error = std::fabs(stats.mass_error());

@@ -1,14 +1,21 @@
 // Run control of the 2D solver: a runaway velocity is reported as a DivergenceError naming the
 // time, place and quantity; a checkpoint written mid-run restores the state exactly and the
-// restarted run continues identically to the uninterrupted one.
+// restarted run continues identically to the uninterrupted one. twod::run (twod/run.hpp): the
+// samples lie on the uniform grid k dt_out from t = 0 (the last on t_end), snapshots on
+// j dt_snapshot; a raised stop flag ends the run at the next sample with the series so far and
+// calls the checkpoint hook; a run restarted from that checkpoint continues the same sample grid
+// and repeats the uninterrupted run bit for bit.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "checkpoint.hpp"
 #include "initial_state.hpp"
+#include "run.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 
@@ -25,7 +32,20 @@ struct Case {
     const MuCurve curve(CurveKind::Regularised, params.rheology.material, 0.004);
     ic = perturbed_bagnold(steady_state(curve, params.zeta, 0.004), 2e-4, grid.Lx);
   }
+  Solver solver() const { return Solver(grid, params, make_initial_state(grid, ic, params)); }
+  SurfaceSeries empty_series() const {
+    return SurfaceSeries::uniform_grid(grid.Lx, grid.nx, 0.004);
+  }
 };
+
+RunSchedule schedule(double t_end, double dt_out, double dt_snapshot = 0.0) {
+  RunSchedule s;
+  s.t_end = t_end;
+  s.dt_out = dt_out;
+  s.dt_snapshot = dt_snapshot;
+  return s;
+}
+
 }  // namespace
 
 TEST(RunControl, RunawayVelocityIsReportedWithTimeAndPlace) {
@@ -92,4 +112,92 @@ TEST(RunControl, NoSliverStepsBeforeOutputTimes) {
   std::printf("%d steps to 60 output times 3.3 steps apart: shortest %.3g of the CFL step\n", steps,
               shortest / dt_cfl);
   EXPECT_GT(shortest, 0.45 * dt_cfl);
+}
+
+TEST(TwodRun, SamplesAndSnapshotsLieOnTheirUniformGrids) {
+  const Case c;
+  Solver solver = c.solver();
+  std::vector<double> snapshots;
+  int samples_seen = 0;
+  RunHooks hooks;
+  hooks.snapshot = [&](const Solver& s) { snapshots.push_back(s.state().t); };
+  hooks.sample = [&](const Solver&, const SurfaceSeries&) { ++samples_seen; };
+  // t_end is not a multiple of dt_out: the last sample is at t_end (as in depthavg's run).
+  const RunResult r = run(solver, c.empty_series(), schedule(0.045, 0.01, 0.015), hooks);
+  ASSERT_TRUE(r.completed()) << r.message;
+  const std::vector<double> expected = {0.0, 0.01, 0.02, 0.03, 0.04, 0.045};
+  ASSERT_EQ(r.series.nt(), expected.size());
+  for (std::size_t n = 0; n < expected.size(); ++n) EXPECT_NEAR(r.series.t[n], expected[n], 1e-15);
+  EXPECT_EQ(samples_seen, 6);
+  const std::vector<double> snap_expected = {0.0, 0.015, 0.03, 0.045};
+  ASSERT_EQ(snapshots.size(), snap_expected.size());
+  for (std::size_t n = 0; n < snapshots.size(); ++n)
+    EXPECT_NEAR(snapshots[n], snap_expected[n], 1e-15);
+  EXPECT_EQ(r.series.u_mean.size(), r.series.h.size());  // depth-averaged velocity sampled too
+  EXPECT_GT(r.I_max, r.I_min);
+  EXPECT_DOUBLE_EQ(solver.state().t, 0.045);
+}
+
+TEST(TwodRun, StopFlagEndsTheRunAtTheNextSampleAndRestartContinuesTheGrid) {
+  const Case c;
+  const RunSchedule sched = schedule(0.05, 0.01, 0.025);
+  RunHooks record_snapshots;
+  record_snapshots.snapshot = [](const Solver&) {};
+
+  // The uninterrupted run.
+  Solver a = c.solver();
+  const RunResult full = run(a, c.empty_series(), sched, record_snapshots);
+  ASSERT_TRUE(full.completed()) << full.message;
+  ASSERT_EQ(full.series.nt(), 6u);
+
+  // The flag is raised between samples (at the snapshot at 0.025 s): the run goes on to the
+  // sample at 0.03 s and stops there.
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "granbench_twod_run_test.h5").string();
+  std::atomic<bool> stop{false};
+  int checkpoints = 0;
+  RunHooks hooks;
+  hooks.stop = &stop;
+  hooks.snapshot = [&](const Solver& s) {
+    if (s.state().t > 0.02) stop.store(true);
+  };
+  hooks.checkpoint = [&](const Solver& s, const SurfaceSeries& kept) {
+    ++checkpoints;
+    write_checkpoint(path, s, kept);
+  };
+  Solver b = c.solver();
+  const RunResult first = run(b, c.empty_series(), sched, hooks);
+  EXPECT_EQ(first.status, RunStatus::Interrupted);
+  EXPECT_NE(first.message.find("interrupted at t ="), std::string::npos);
+  EXPECT_EQ(checkpoints, 1);
+  ASSERT_EQ(first.series.nt(), 4u);
+  EXPECT_DOUBLE_EQ(b.state().t, 0.03);
+  EXPECT_EQ(first.series.h,
+            std::vector<double>(full.series.h.begin(), full.series.h.begin() + 4 * c.grid.nx));
+
+  // The restart from the checkpoint samples at 0.04 and 0.05, not 0.03 + k dt_out, and ends
+  // where the uninterrupted run ended, to the bit.
+  const Checkpoint cp = read_checkpoint(path);
+  std::filesystem::remove(path);
+  Solver d(cp.grid, c.params, cp.state);
+  d.resume(cp.steps, cp.dt_last, cp.initial_volume);
+  d.set_warm_start(cp.warm_start);
+  const RunResult rest = run(d, cp.series, sched, record_snapshots);
+  ASSERT_TRUE(rest.completed()) << rest.message;
+  EXPECT_EQ(rest.series.t, full.series.t);
+  EXPECT_EQ(rest.series.h, full.series.h);
+  EXPECT_EQ(d.statistics().steps, a.statistics().steps);
+  EXPECT_EQ(d.state().u, a.state().u);
+}
+
+TEST(TwodRun, DivergenceIsReportedWithTheSamplesSoFar) {
+  Case c;
+  c.params.velocity_limit = 0.5;  // the surface moves at ~1 m/s: "runaway" in the first step
+  Solver solver = c.solver();
+  const RunResult r = run(solver, c.empty_series(), schedule(0.05, 0.01));
+  EXPECT_EQ(r.status, RunStatus::Diverged);
+  ASSERT_TRUE(r.divergence.has_value());
+  EXPECT_GT(r.divergence->t, 0.0);
+  EXPECT_EQ(r.series.nt(), 1u);  // the initial state
+  EXPECT_FALSE(r.message.empty());
 }

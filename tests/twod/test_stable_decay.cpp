@@ -18,6 +18,7 @@
 #include "dispersion.hpp"
 #include "initial_state.hpp"
 #include "linear_stability_2d.hpp"
+#include "run.hpp"
 #include "solver.hpp"
 #include "spectral_growth.hpp"
 #include "steady_state.hpp"
@@ -39,11 +40,13 @@ TEST(StableDecay, PerturbedLayerRelaxesToBagnold) {
 
   const Grid g(32, 16, Lx, 2 * h0);
   Solver solver(g, params, make_initial_state(g, perturbed_bagnold(steady, a0, Lx), params));
-  SurfaceSeries series = SurfaceSeries::uniform_grid(Lx, g.nx, h0);
-  for (int n = 0; n <= 40; ++n) {
-    solver.advance_to(0.025 * n);
-    series.append(solver.state().t, surface_heights(g, solver.state().f));
-  }
+  RunSchedule schedule;
+  schedule.t_end = 1.0;
+  schedule.dt_out = 0.025;
+  const RunResult run_result = run(solver, SurfaceSeries::uniform_grid(Lx, g.nx, h0), schedule);
+  ASSERT_TRUE(run_result.completed()) << run_result.message;
+  const SurfaceSeries& series = run_result.series;
+  ASSERT_EQ(series.nt(), 41u);
   const auto amp = mode_amplitudes(series, 1);
   const double a_start = 2.0 * std::abs(amp.front()) / g.nx,
                a_end = 2.0 * std::abs(amp.back()) / g.nx;

@@ -1,0 +1,113 @@
+// A run of the 2D solver: the sampling schedule, the hooks and the stopping rules of run.hpp.
+#include "run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace granbench::twod {
+
+namespace {
+
+// The first k >= 1 with k dt after t (a time within 1e-9 dt of a grid point counts as on it, so
+// a restart at a sample time does not take that sample again, nor a sliver step towards it).
+long first_after(double t, double dt) {
+  return static_cast<long>(std::floor(t / dt + 1e-9)) + 1;
+}
+
+// Reached `target` up to the rounding of the last step, which ends on it.
+bool reached(double t, double target) {
+  return t >= target * (1.0 - 1e-12);
+}
+
+}  // namespace
+
+const char* run_status_name(RunStatus s) {
+  switch (s) {
+    case RunStatus::Completed:
+      return "completed";
+    case RunStatus::Interrupted:
+      return "interrupted";
+    case RunStatus::Diverged:
+      return "diverged";
+    case RunStatus::Failed:
+      return "failed";
+  }
+  return "failed";
+}
+
+RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
+              const RunHooks& hooks) {
+  if (!(schedule.t_end > 0.0) || !(schedule.dt_out > 0.0) || !(schedule.dt_snapshot >= 0.0))
+    throw std::invalid_argument("twod::run: t_end and dt_out must be positive, dt_snapshot >= 0");
+  const auto wall_start = std::chrono::steady_clock::now();
+  const Grid& g = solver.grid();
+  const MuCurve& curve = solver.viscosity_model().curve();
+
+  RunResult r;
+  r.series = std::move(series);
+  double I_lo = std::numeric_limits<double>::infinity(), I_hi = 0.0;
+  auto take_sample = [&] {
+    const Fields& s = solver.state();
+    r.series.append(s.t, surface_heights(g, s.f), depth_averaged_velocity(g, s));
+    if (hooks.sample) hooks.sample(solver, r.series);
+  };
+
+  const double t_end = schedule.t_end, dt_out = schedule.dt_out, dt_snap = schedule.dt_snapshot;
+  // Samples k = 1 .. n_samples at min(k dt_out, t_end): the last one lands on t_end (as in
+  // depthavg::Solver::run) also when dt_out does not divide it.
+  const auto n_samples = static_cast<long>(std::ceil(t_end / dt_out - 1e-9));
+  // Snapshots only on their grid, none past t_end.
+  const bool snapshots = hooks.snapshot && dt_snap > 0.0;
+  const long n_snaps = snapshots ? static_cast<long>(std::floor(t_end / dt_snap + 1e-9)) : 0;
+  long k = first_after(solver.state().t, dt_out);
+  long j = snapshots ? first_after(solver.state().t, dt_snap) : 1;
+
+  try {
+    if (hooks.snapshot) hooks.snapshot(solver);
+    if (r.series.nt() == 0) take_sample();
+    for (; k <= n_samples; ++k) {
+      if (hooks.stop && hooks.stop->load()) {
+        r.status = RunStatus::Interrupted;
+        r.message = "interrupted at t = " + std::to_string(solver.state().t) + " s";
+        break;
+      }
+      const double t_sample = std::min(static_cast<double>(k) * dt_out, t_end);
+      // snapshots before this sample; one at the sample's time follows the sample
+      for (; j <= n_snaps && !reached(static_cast<double>(j) * dt_snap, t_sample); ++j) {
+        solver.advance_to(static_cast<double>(j) * dt_snap);
+        hooks.snapshot(solver);
+      }
+      solver.advance_to(t_sample);
+      take_sample();
+      const RheologyStats rs = rheology_stats(g, solver.state().f, solver.properties().I_c, curve);
+      if (std::isfinite(rs.I_min)) I_lo = std::min(I_lo, rs.I_min), I_hi = std::max(I_hi, rs.I_max);
+      r.illposed_fraction_max = std::max(r.illposed_fraction_max, rs.illposed_fraction);
+      r.last = rs;
+      if (j <= n_snaps && reached(solver.state().t, static_cast<double>(j) * dt_snap)) {
+        hooks.snapshot(solver);
+        ++j;
+      }
+    }
+  } catch (const DivergenceError& e) {
+    r.status = RunStatus::Diverged;
+    r.message = e.what();
+    r.divergence = e;
+  } catch (const std::exception& e) {
+    // a failed linear solve, a full disk: keep what was computed
+    r.status = RunStatus::Failed;
+    r.message = e.what();
+  }
+  if (r.status == RunStatus::Interrupted && hooks.checkpoint) hooks.checkpoint(solver, r.series);
+
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  r.I_min = std::isfinite(I_lo) ? I_lo : nan;
+  r.I_max = std::isfinite(I_lo) ? I_hi : nan;
+  r.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return r;
+}
+
+}  // namespace granbench::twod

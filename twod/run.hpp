@@ -1,0 +1,70 @@
+// A run of the 2D solver (run.cpp): advance a Solver to t_end, sampling the surface h(x, t) and
+// the depth-averaged velocity into a SurfaceSeries, the 2D counterpart of depthavg::Solver::run.
+//
+// Schedule. Samples are taken at t = min(k dt_out, t_end), k = 1, 2, ..., on the uniform grid
+// counted from t = 0, whatever time the solver starts at: a run restarted from a checkpoint at
+// time t_c continues with the first k dt_out after t_c, so its series is the uninterrupted run's
+// (the measurement needs that uniform grid, analysis/surface_measurement.hpp). Snapshots, when
+// asked for, are taken at the start and at j dt_snapshot on the same kind of grid. The solver
+// is advanced with Solver::advance_to to each next event time, so the step sequence depends only
+// on the event times: a run with the same events repeats another to the bit (the solver halves
+// the last two steps before an event instead of taking a sliver, so every event time counts).
+//
+// Control. The stop flag (Ctrl-C) is read after each sample: a raised flag ends the run there,
+// with the series so far, and the checkpoint hook is called. A DivergenceError ends the run with
+// its time, place and quantity; any other std::exception from the time loop ends it as Failed
+// with its message. In every case the samples taken so far are returned.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "diagnostics.hpp"
+#include "solver.hpp"
+#include "surface_series.hpp"
+
+namespace granbench::twod {
+
+struct RunSchedule {
+  double t_end = 1.0;        // [s]
+  double dt_out = 0.01;      // samples at k dt_out [s]
+  double dt_snapshot = 0.0;  // snapshots at j dt_snapshot [s]; 0: only the one at the start
+};
+
+// What the caller does at the run's events; every hook may be empty.
+struct RunHooks {
+  // After each sample (the start's included): progress, the caller's own per-sample records.
+  std::function<void(const Solver&, const SurfaceSeries&)> sample;
+  // At the start and at each snapshot time (2D fields to a file). Empty: no snapshot times
+  // enter the schedule.
+  std::function<void(const Solver&)> snapshot;
+  // When the run stops at the stop flag: the state and series to continue from.
+  std::function<void(const Solver&, const SurfaceSeries&)> checkpoint;
+  const std::atomic<bool>* stop = nullptr;  // read after each sample
+};
+
+enum class RunStatus { Completed, Interrupted, Diverged, Failed };
+const char* run_status_name(RunStatus s);  // "completed", "interrupted", "diverged", "failed"
+
+struct RunResult {
+  RunStatus status = RunStatus::Completed;
+  std::string message;                        // why it stopped early; empty if completed
+  std::optional<DivergenceError> divergence;  // when, where: set if Diverged
+  SurfaceSeries series;
+  // Rheology over the samples taken after the start (DESIGN.md §9): the range of I visited,
+  // the ill-posed fraction at the last such sample and its largest value.
+  double I_min = 0.0, I_max = 0.0;  // NaN if no sample had a granular cell with p > 0
+  RheologyStats last;
+  double illposed_fraction_max = 0.0;
+  double wall_seconds = 0.0;
+  bool completed() const { return status == RunStatus::Completed; }
+};
+
+// Runs `solver` from its current time to schedule.t_end. `series` holds the samples so far (a
+// restart's); when it is empty the current state is sampled first.
+RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
+              const RunHooks& hooks = {});
+
+}  // namespace granbench::twod

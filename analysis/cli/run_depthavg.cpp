@@ -36,7 +36,7 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->capture_default_str();
   app.add_option("--frame-speed", o.frame_speed,
                  "solve in the frame moving at this speed [m/s], or 'linear' for the seeded "
-                 "mode's (7.11) phase speed; output stays in the lab frame")
+                 "mode's (7.11) phase speed, or 0 for the lab frame; output is in the lab frame")
       ->group(g)
       ->capture_default_str();
 }
@@ -120,6 +120,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   depthavg::IntegratorParams integ;
   integ.rtol = o.rtol;
   integ.atol = o.atol;
+  integ.max_order = 2;  // A-stable BDF: at run's tolerances orders 3-5 are stability-limited (params.hpp)
   depthavg::InitialParams init;
   init.kind = o.init == "eigenmode" ? depthavg::InitKind::Eigenmode : depthavg::InitKind::Sine;
   init.a0 = o.a0;

@@ -1,15 +1,16 @@
 // Benchmark (not a test) of the depth-averaged solver, issue 3 item 7.
 //
 // 1. The rollwave case of §7: Lx = 0.08 m, zeta = 28.5 deg, h0 = 4 mm, a0 = 0.2 mm (7.2),
-//    regularised curve (6.3)-(6.4), nx = 512, t_end = 10 s, the defaults of `granbench run`
-//    (central reconstruction, rtol 1e-6, atol 1e-10, band-preconditioned SPGMR): wall time, CVODE
-//    steps, right-hand-side evaluations, linear iterations. Target < 1 s on one core. Run in the
-//    lab frame and in the frame moving at the linear phase speed (`--frame-speed linear`).
+//    regularised curve (6.3)-(6.4), nx = 512, t_end = 10 s, the settings of `granbench run`
+//    (central reconstruction, rtol 1e-6, atol 1e-10, BDF order <= 2 (5 in the lab frame), block-band-preconditioned
+//    SPGMR, the frame moving at the linear phase speed): wall time, CVODE steps, right-hand-side
+//    evaluations, linear iterations. Target < 1 s on one core. Also at rtol 1e-4 (atol 1e-8),
+//    and in the lab frame (`--frame-speed 0`). docs/performance.md has the time error of each.
 // 2. A linear-regime sweep of 24 domain lengths (0.03 .. 0.4 m, eigenmode seeding, the settings
 //    of `granbench sweep`) on 2 threads, lab and co-moving frames: wall time. Target < 10 s.
 //
-// Prints one JSON object. Usage: bench_depthavg_rollwave [--skip-lab]  (skips the slow lab-frame
-// rollwave)
+// Prints one JSON object. Usage: bench_depthavg_rollwave [--skip-lab] [--skip-sweep]
+// (--skip-lab skips the slow lab-frame rollwave, --skip-sweep the two sweeps)
 #include <atomic>
 #include <chrono>
 #include <ctime>
@@ -30,12 +31,16 @@ using namespace granbench;
 
 namespace {
 
-nlohmann::json rollwave(const SteadyState& base, const MuCurve& curve, double frame_speed) {
+nlohmann::json rollwave(const SteadyState& base, const MuCurve& curve, double frame_speed,
+                        double rtol, double atol, int max_order) {
   depthavg::SpaceParams space;
   space.Lx = 0.08;
   space.nx = 512;
   space.frame_speed = frame_speed;
-  const depthavg::IntegratorParams integ;  // defaults, as `granbench run`
+  depthavg::IntegratorParams integ;
+  integ.rtol = rtol;
+  integ.atol = atol;
+  integ.max_order = max_order;  // as `granbench run`: 2 co-moving, 5 in the lab frame
   depthavg::InitialParams init;
   init.a0 = 2e-4;
   depthavg::OutputParams output;
@@ -50,6 +55,7 @@ nlohmann::json rollwave(const SteadyState& base, const MuCurve& curve, double fr
           {"nx", space.nx},
           {"t_end", output.t_end},
           {"rtol", integ.rtol},
+          {"max_order", integ.max_order},
           {"atol", integ.atol},
           {"wall_seconds", r.wall_seconds},
           {"cpu_seconds", cpu},  // the machine may be shared: CPU time is the fairer figure
@@ -60,6 +66,11 @@ nlohmann::json rollwave(const SteadyState& base, const MuCurve& curve, double fr
           {"rhs_evals_total", r.stats.total_rhs_evals()},
           {"linear_iterations", r.stats.linear_iterations},
           {"preconditioner_evals", r.stats.preconditioner_evals},
+          {"preconditioner_solves", r.stats.preconditioner_solves},
+          {"nonlinear_iterations", r.stats.nonlinear_iterations},
+          {"error_test_failures", r.stats.error_test_failures},
+          {"nonlinear_convergence_failures", r.stats.nonlinear_convergence_failures},
+          {"last_order", r.stats.last_order},
           {"microseconds_per_step", 1e6 * r.wall_seconds / r.stats.steps},
           {"mass_error", r.mass_error()},
           {"wave_speed", ws.speed},
@@ -109,16 +120,27 @@ nlohmann::json sweep(const SteadyState& base, const MuCurve& curve, bool co_movi
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool skip_lab = argc > 1 && std::strcmp(argv[1], "--skip-lab") == 0;
+  bool skip_lab = false, skip_sweep = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--skip-lab") == 0) skip_lab = true;
+    else if (std::strcmp(argv[i], "--skip-sweep") == 0) skip_sweep = true;
+    else {
+      std::cerr << "usage: bench_depthavg_rollwave [--skip-lab] [--skip-sweep]\n";
+      return 2;
+    }
+  }
   const Material material;
   const double h0 = 4e-3;
   const MuCurve curve(CurveKind::Regularised, material, h0);
   const SteadyState base = steady_state(curve, degrees_to_radians(28.5), h0);
   const double c_linear = dispersion_mode(base, 1.0, 0.08).phase_speed;
   nlohmann::json out;
-  out["rollwave_comoving"] = rollwave(base, curve, c_linear);
-  if (!skip_lab) out["rollwave_lab"] = rollwave(base, curve, 0.0);
-  out["sweep_lab"] = sweep(base, curve, false);
-  out["sweep_comoving"] = sweep(base, curve, true);
+  out["rollwave_comoving"] = rollwave(base, curve, c_linear, 1e-6, 1e-10, 2);
+  out["rollwave_comoving_rtol_1e-4"] = rollwave(base, curve, c_linear, 1e-4, 1e-8, 2);
+  if (!skip_lab) out["rollwave_lab"] = rollwave(base, curve, 0.0, 1e-6, 1e-10, 5);
+  if (!skip_sweep) {
+    out["sweep_lab"] = sweep(base, curve, false);
+    out["sweep_comoving"] = sweep(base, curve, true);
+  }
   std::cout << out.dump(2) << "\n";
 }

@@ -117,6 +117,10 @@ double MuCurve::mu(double I) const {
   return upper_branch(I);
 }
 
+void MuCurve::mu_many(std::span<const double> I, std::span<double> out) const {
+  for (std::size_t i = 0; i < I.size(); ++i) out[i] = mu(I[i]);
+}
+
 double MuCurve::dmu_dI(double I) const {
   if (I <= junction_I_ && I > 0.0) {
     const double L = std::log(A_minus_ / I);

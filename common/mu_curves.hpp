@@ -11,6 +11,7 @@
 // finding on a bracket). MuCurve is a small value type: construct once, copy freely.
 #pragma once
 
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -39,6 +40,9 @@ class MuCurve {
   MuCurve(CurveKind kind, const Material& material, double h0 = 4e-3);
 
   double mu(double I) const;
+  // mu at every I of a range (mu.size() == I.size()): one call per right-hand side of a model,
+  // not one per cell.
+  void mu_many(std::span<const double> I, std::span<double> mu) const;
   double dmu_dI(double I) const;
   // I with mu(I) = target; throws CurveRangeError outside (mu_min, mu_max).
   double inverse(double target_mu) const;

@@ -1,19 +1,19 @@
-// The CVODE glue (BDF + SPGMR + coloured band preconditioner). See cvode_integrator.hpp.
+// The CVODE glue (BDF + SPGMR + coloured block-band preconditioner). See cvode_integrator.hpp.
 #include "cvode_integrator.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
-#include <sunmatrix/sunmatrix_band.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <vector>
+
+#include "block_band.hpp"
 
 namespace granbench::depthavg {
 
@@ -52,22 +52,24 @@ struct CvodeIntegrator::Impl {
   N_Vector y = nullptr, atol = nullptr, constraints = nullptr, ftmp = nullptr, ytmp = nullptr,
            ewt = nullptr, ele = nullptr;
   void* mem = nullptr;
-  SUNLinearSolver krylov = nullptr, band_ls = nullptr;
-  SUNMatrix J = nullptr, P = nullptr;
-  sunindextype bw = 0;  // upper = lower half-bandwidth in components
+  SUNLinearSolver krylov = nullptr;
+  BlockBandMatrix J, P;  // the lumped Jacobian, and the block LU of I - gamma J
   std::vector<std::vector<std::size_t>> groups;
+  std::vector<double> increment;  // of the difference quotients, per cell
   long precond_rhs_evals = 0;
   std::size_t nonfinite = SIZE_MAX;  // last component where U or F(U) was not finite
   std::string last_error;
   double t = 0.0;
 
-  Impl(const Rhs& r) : rhs(r), n(r.size()) {}
+  Impl(const Rhs& r)
+      : rhs(r),
+        n(r.size()),
+        J(r.nx(), Rhs::stencil_radius),
+        P(r.nx(), Rhs::stencil_radius),
+        increment(r.nx()) {}
   ~Impl() {
     if (mem) CVodeFree(&mem);
     if (krylov) SUNLinSolFree(krylov);
-    if (band_ls) SUNLinSolFree(band_ls);
-    if (J) SUNMatDestroy(J);
-    if (P) SUNMatDestroy(P);
     for (N_Vector v : {y, atol, constraints, ftmp, ytmp, ewt, ele})
       if (v) N_VDestroy(v);
     if (ctx) SUNContext_Free(&ctx);
@@ -95,9 +97,9 @@ struct CvodeIntegrator::Impl {
   }
 
   // J_band by coloured difference quotients about (y, fy), wrap-around entries lumped onto the
-  // diagonal cell (see the header); then P = I - gamma J_band, band LU.
-  static int psetup(sunrealtype, N_Vector yv, N_Vector fy, sunbooleantype jok,
-                    sunbooleantype* jcur, sunrealtype gamma, void* data) {
+  // diagonal cell (see the header); then P = I - gamma J_band, block LU (block_band.hpp).
+  static int psetup(sunrealtype, N_Vector yv, N_Vector fy, sunbooleantype jok, sunbooleantype* jcur,
+                    sunrealtype gamma, void* data) {
     auto* self = static_cast<Impl*>(data);
     if (!jok) {
       if (self->band_jacobian(yv, fy) != 0) return 1;
@@ -105,15 +107,16 @@ struct CvodeIntegrator::Impl {
     } else {
       *jcur = SUNFALSE;
     }
-    if (SUNMatCopy(self->J, self->P) != 0) return -1;
-    if (SUNMatScaleAddI(-gamma, self->P) != 0) return -1;
-    return SUNLinSolSetup(self->band_ls, self->P) == 0 ? 0 : 1;
+    // a singular pivot block: recoverable, CVODE retries with a fresh J or a smaller step
+    return self->P.factor_shifted(self->J, gamma) ? 0 : 1;
   }
 
   static int psolve(sunrealtype, N_Vector, N_Vector, N_Vector r, N_Vector z, sunrealtype,
                     sunrealtype, int, void* data) {
     auto* self = static_cast<Impl*>(data);
-    return SUNLinSolSolve(self->band_ls, self->P, z, r, 0.0) == 0 ? 0 : 1;
+    N_VScale(1.0, r, z);
+    self->P.solve(self->span_of(z));
+    return 0;
   }
 
   int band_jacobian(N_Vector yv, N_Vector fy) {
@@ -125,30 +128,25 @@ struct CvodeIntegrator::Impl {
     const double* w = N_VGetArrayPointer(ewt);
     double* yt = N_VGetArrayPointer(ytmp);
     const double* ft = N_VGetArrayPointer(ftmp);
-    SUNMatZero(J);
-    std::vector<double> inc(nx);
+    J.set_zero();
     for (const auto& group : groups) {
       for (std::size_t a = 0; a < 2; ++a) {
         std::copy(yd, yd + n, yt);
         for (std::size_t c : group) {
           const std::size_t i = 2 * c + a;
-          inc[c] = srur * std::max(std::fabs(yd[i]), 1.0 / w[i]);
-          yt[i] += inc[c];
+          increment[c] = srur * std::max(std::fabs(yd[i]), 1.0 / w[i]);
+          yt[i] += increment[c];
         }
         if (rhs_cb(t, ytmp, ftmp, this) != 0) return 1;
         ++precond_rhs_evals;
         for (std::size_t c : group) {
-          const auto col = static_cast<sunindextype>(2 * c + a);
-          double* column = SUNBandMatrix_Column(J, col);
           for (std::size_t k = 0; k <= 2 * r; ++k) {
             const std::size_t cell = (c + nx + k - r) % nx;
-            for (std::size_t b = 0; b < 2; ++b) {
-              auto row = static_cast<sunindextype>(2 * cell + b);
-              const double v = (ft[row] - f0[row]) / inc[c];
-              if (row - col > bw || col - row > bw)  // wrap-around: lump onto the diagonal cell
-                row = static_cast<sunindextype>(2 * c + b);
-              SM_COLUMN_ELEMENT_B(column, row, col) += v;
-            }
+            // wrap-around (the cyclic neighbour lies beyond the band): lump onto the diagonal
+            const bool wraps = (cell > c ? cell - c : c - cell) > r;
+            auto& blk = J.block(wraps ? c : cell, c);
+            for (std::size_t b = 0; b < 2; ++b)
+              blk[2 * b + a] += (ft[2 * cell + b] - f0[2 * cell + b]) / increment[c];
           }
         }
       }
@@ -204,13 +202,6 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
   check(CVodeSetLinearSolver(m.mem, m.krylov, nullptr), "CVodeSetLinearSolver");
   check(CVodeSetEpsLin(m.mem, p.eps_lin), "CVodeSetEpsLin");
 
-  m.bw = static_cast<sunindextype>(2 * Rhs::stencil_radius + 1);  // cell j+-2, both components
-  m.J = SUNBandMatrix(N, m.bw, m.bw, m.ctx);
-  m.P = SUNBandMatrix(N, m.bw, m.bw, m.ctx);
-  if (!m.J || !m.P) throw std::runtime_error("CVODE: SUNBandMatrix failed");
-  m.band_ls = SUNLinSol_Band(m.y, m.P, m.ctx);
-  if (!m.band_ls) throw std::runtime_error("CVODE: SUNLinSol_Band failed");
-  check(SUNLinSolInitialize(m.band_ls), "SUNLinSolInitialize");
   m.groups = colour_cells(rhs.nx(), Rhs::stencil_radius);
   if (band)
     check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
@@ -227,8 +218,8 @@ AdvanceResult CvodeIntegrator::advance_to(double t_out) {
   res.t = t_reached;
   if (flag < 0) {
     res.ok = false;
-    res.message = m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag)
-                                       : m.last_error;
+    res.message =
+        m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag) : m.last_error;
     if (m.nonfinite != SIZE_MAX) {
       res.worst = m.nonfinite;
       res.nonfinite = true;
@@ -246,8 +237,12 @@ AdvanceResult CvodeIntegrator::advance_to(double t_out) {
   return res;
 }
 
-std::span<const double> CvodeIntegrator::state() const { return impl_->span_of(impl_->y); }
-double CvodeIntegrator::time() const { return impl_->t; }
+std::span<const double> CvodeIntegrator::state() const {
+  return impl_->span_of(impl_->y);
+}
+double CvodeIntegrator::time() const {
+  return impl_->t;
+}
 
 CvodeStats CvodeIntegrator::stats() const {
   const Impl& m = *impl_;

@@ -38,7 +38,13 @@ struct IntegratorParams {
   double rtol = 1e-6;
   double atol = 1e-10;         // absolute tolerance, scaled per component (h in m, hu in m^2/s)
   long max_steps = 2000000;    // per output interval
-  int max_order = 5;           // BDF order limit
+  // BDF order limit. Orders 3-5 are not A-stable: near the imaginary axis, where a hyperbolic
+  // semi-discretisation's eigenvalues lie, they are unstable over a band of steps, and CVODE then
+  // holds the step at that band whatever the tolerance (the rollwave of `run` took 5 900-7 300 steps
+  // at rtol 1e-4 .. 1e-6). Order 2 is A-stable and its steps grow as the tolerance loosens, so it is
+  // the choice at moderate tolerances; at tight ones (linear measurements) the accuracy limit is
+  // far below that band and order 5 is cheaper. docs/performance.md has the measurements.
+  int max_order = 5;
   double eps_lin = 0.05;       // CVODE's linear-solver tolerance factor
   Preconditioner preconditioner = Preconditioner::Band;
 };

@@ -11,22 +11,22 @@ namespace granbench::depthavg {
 namespace {
 
 double minmod(double a, double b) {
-  if (a * b <= 0.0) return 0.0;
-  return a > 0.0 ? std::min(a, b) : std::max(a, b);
+  // 0 when a, b differ in sign, else the one nearer zero (branch-free, so the loop vectorises)
+  const double m = std::fabs(a) < std::fabs(b) ? a : b;
+  return a * b > 0.0 ? m : 0.0;
 }
 
-// Physical flux and characteristic speeds of (h, q) with momentum flux chi q u + g' h^2/2.
-// In a frame moving at speed c the fluxes gain -c U (see rhs.hpp).
-struct FaceState {
-  double h, u, q;
-  double flux_h(double c) const { return q - c * h; }                       // (7.3)
-  double flux_q(double chi, double g_cos, double c) const {
-    return chi * q * u + 0.5 * g_cos * h * h - c * q;                       // (7.4)
-  }
-  double celerity(double chi, double g_cos) const {
-    return std::sqrt(std::max(0.0, chi * (chi - 1.0) * u * u + g_cos * h));
-  }
-};
+// Slope of the reconstruction (as a difference across the cell) from the left and right
+// differences; R is fixed per call, so the loop holds no switch.
+template <Reconstruction R>
+double limited_slope(double dm, double dp) {
+  if constexpr (R == Reconstruction::Central) return 0.5 * (dm + dp);
+  if constexpr (R == Reconstruction::Minmod) return minmod(dm, dp);
+  if constexpr (R == Reconstruction::MC) return minmod(minmod(2.0 * dm, 2.0 * dp), 0.5 * (dm + dp));
+  if constexpr (R == Reconstruction::VanAlbada)  // smooth: dm dp (dm + dp) / (dm^2 + dp^2)
+    return dm * dp * (dm + dp) / (dm * dm + dp * dp + 1e-300);
+  return 0.0;
+}
 
 }  // namespace
 
@@ -42,10 +42,11 @@ Rhs::Rhs(const SteadyState& base, const MuCurve& curve, const SpaceParams& space
   h_dry_ = space_.h_dry_fraction * base_.h0;
   // I = 5 d u / (2 h^{3/2} sqrt(phi g cos zeta)) is linear in u h^{-3/2}: keep its prefactor.
   inertial_scale_ = depth_averaged_inertial_number(base_.material, base_.zeta, 1.0, 1.0);
-  slope_h_.resize(space_.nx);
-  slope_q_.resize(space_.nx);
-  face_flux_h_.resize(space_.nx);
-  face_flux_q_.resize(space_.nx);
+  mu_rest_ = std::min(tan_zeta_, curve_.mu(1e-300));
+  const std::size_t n = space_.nx + 2 * ghost;
+  for (auto* v : {&h_, &q_, &u_, &slope_h_, &slope_q_, &face_flux_h_, &face_flux_q_}) v->resize(n);
+  inertial_.resize(space_.nx);
+  mu_.resize(space_.nx);
 }
 
 double Rhs::velocity(double h, double q) const {
@@ -59,86 +60,127 @@ double Rhs::momentum_source(double h, double q) const {
   if (h <= 0.0) return 0.0;
   const double u = velocity(h, q);
   const double I = inertial_scale_ * std::fabs(u) / (h * std::sqrt(h));  // DESIGN.md §4, (7.1)
-  double mu;
-  if (u != 0.0 && I > 0.0) {
-    mu = std::copysign(curve_.mu(I), u);
-  } else {
-    // At rest: static friction balances gravity up to the curve's value at I -> 0+.
-    mu = std::min(tan_zeta_, curve_.mu(1e-300));
-  }
+  // At rest: static friction balances gravity up to the curve's value at I -> 0+.
+  const double mu = (u != 0.0 && I > 0.0) ? std::copysign(curve_.mu(I), u) : mu_rest_;
   return g_cos_ * h * (tan_zeta_ - mu);  // (7.4): h g cos(zeta) (tan(zeta) - mu)
 }
 
-double Rhs::slope(double left, double centre, double right) const {
-  const double dm = centre - left, dp = right - centre;
-  switch (space_.reconstruction) {
-    case Reconstruction::Central:
-      return 0.5 * (dm + dp);
-    case Reconstruction::Minmod:
-      return minmod(dm, dp);
-    case Reconstruction::MC:
-      return minmod(minmod(2.0 * dm, 2.0 * dp), 0.5 * (dm + dp));
-    case Reconstruction::VanAlbada:  // smooth: dm dp (dm + dp) / (dm^2 + dp^2)
-      return dm * dp * (dm + dp) / (dm * dm + dp * dp + 1e-300);
+// Central-upwind flux minus the viscous flux at face f - 1/2 (between cells f-1 and f, array
+// indices f-1+ghost and f+ghost), for f = 0 .. nx, stored at index f. Needs the slopes of cells
+// -1 .. nx.
+template <Reconstruction R>
+void Rhs::face_fluxes() const {
+  const std::size_t n = space_.nx, g = ghost;
+  const double chi = space_.chi, cf = space_.frame_speed, g_cos = g_cos_;
+  const double e4 = h_dry_ * h_dry_ * h_dry_ * h_dry_;
+  const double nu_dx = space_.viscous ? base_.nu / dx_ : 0.0;
+  const double* h = h_.data();
+  const double* q = q_.data();
+  const double* u = u_.data();
+  double* sh = slope_h_.data();
+  double* sq = slope_q_.data();
+  double* fh_out = face_flux_h_.data();
+  double* fq_out = face_flux_q_.data();
+
+  // 1. Slopes of cells -1 .. nx; h kept non-negative at the faces.
+  for (std::size_t i = g - 1; i <= n + g; ++i) {
+    const double s = limited_slope<R>(h[i] - h[i - 1], h[i + 1] - h[i]);
+    const double cap = 2.0 * std::max(h[i], 0.0);
+    sh[i] = std::fabs(s) > cap ? std::copysign(cap, s) : s;
+    sq[i] = limited_slope<R>(q[i] - q[i - 1], q[i + 1] - q[i]);
   }
-  return 0.0;
+
+  // 2. Face states, speeds a+- (characteristic speeds chi u +- c, shifted by -c_frame) and the
+  //    central-upwind flux H of Kurganov, Noelle & Petrova (rhs.hpp).
+  auto vel = [e4](double hh, double qq) {  // Rhs::velocity, inlined
+    const double h4 = hh * hh * hh * hh;
+    return std::sqrt(2.0) * hh * qq / std::sqrt(h4 + std::max(h4, e4));
+  };
+  const std::size_t faces = n + 1;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const std::size_t l = f + (g - 1), r = f + g;
+    const double hL = h[l] + 0.5 * sh[l], hR = h[r] - 0.5 * sh[r];
+    const double uL = vel(hL, q[l] + 0.5 * sq[l]), uR = vel(hR, q[r] - 0.5 * sq[r]);
+    const double qL = hL * uL, qR = hR * uR;
+    const double cL = std::sqrt(std::max(0.0, chi * (chi - 1.0) * uL * uL + g_cos * hL));
+    const double cR = std::sqrt(std::max(0.0, chi * (chi - 1.0) * uR * uR + g_cos * hR));
+    const double ap = std::max(std::max(chi * uL + cL - cf, chi * uR + cR - cf), 0.0);
+    const double am = std::min(std::min(chi * uL - cL - cf, chi * uR - cR - cf), 0.0);
+    const double fhL = qL - cf * hL, fhR = qR - cf * hR;                 // (7.3)
+    const double fqL = chi * qL * uL + 0.5 * g_cos * hL * hL - cf * qL;  // (7.4)
+    const double fqR = chi * qR * uR + 0.5 * g_cos * hR * hR - cf * qR;
+    // ap - am = 0 only where both faces are dry and still: the flux is then the plain average.
+    const bool spread = ap - am > 1e-300;
+    const double w = 1.0 / std::max(ap - am, 1e-300);
+    const double fh = spread ? w * (ap * fhL - am * fhR + ap * am * (hR - hL)) : 0.5 * (fhL + fhR);
+    double fq = spread ? w * (ap * fqL - am * fqR + ap * am * (qR - qL)) : 0.5 * (fqL + fqR);
+    // viscous face flux nu h_f^{3/2} (u_r - u_l)/dx of (7.4)
+    const double hf = 0.5 * (std::max(h[l], 0.0) + std::max(h[r], 0.0));
+    fq -= nu_dx * hf * std::sqrt(hf) * (u[r] - u[l]);
+    fh_out[f] = fh;
+    fq_out[f] = fq;
+  }
 }
 
 void Rhs::operator()(std::span<const double> U, std::span<double> dUdt) const {
-  const std::size_t n = space_.nx;
-  const double chi = space_.chi;
-  const double cf = space_.frame_speed;
-  auto H = [&](std::size_t j) { return U[2 * j]; };
-  auto Q = [&](std::size_t j) { return U[2 * j + 1]; };
+  const std::size_t n = space_.nx, g = ghost;
+  double* h = h_.data();
+  double* q = q_.data();
+  double* u = u_.data();
 
-  // 1. Slopes (as differences across a cell), periodic; h kept non-negative at the faces.
+  // 0. (h, q) into contiguous arrays with periodic ghost cells; u once per cell.
   for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t jm = (j + n - 1) % n, jp = (j + 1) % n;
-    double sh = slope(H(jm), H(j), H(jp));
-    if (std::fabs(sh) > 2.0 * std::max(H(j), 0.0)) sh = std::copysign(2.0 * std::max(H(j), 0.0), sh);
-    slope_h_[j] = sh;
-    slope_q_[j] = slope(Q(jm), Q(j), Q(jp));
+    h[j + g] = U[2 * j];
+    q[j + g] = U[2 * j + 1];
+  }
+  for (std::size_t k = 0; k < g; ++k) {
+    h[k] = h[n + k];
+    q[k] = q[n + k];
+    h[n + g + k] = h[g + k];
+    q[n + g + k] = q[g + k];
+  }
+  const double e4 = h_dry_ * h_dry_ * h_dry_ * h_dry_;
+  for (std::size_t i = 0; i < n + 2 * g; ++i) {
+    const double h4 = h[i] * h[i] * h[i] * h[i];
+    u[i] = std::sqrt(2.0) * h[i] * q[i] / std::sqrt(h4 + std::max(h4, e4));  // Rhs::velocity
   }
 
-  // 2. Central-upwind flux at face j+1/2 (between cells j and j+1), minus the viscous flux.
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t jp = (j + 1) % n;
-    FaceState L, R;
-    L.h = H(j) + 0.5 * slope_h_[j];
-    R.h = H(jp) - 0.5 * slope_h_[jp];
-    L.u = velocity(L.h, Q(j) + 0.5 * slope_q_[j]);
-    R.u = velocity(R.h, Q(jp) - 0.5 * slope_q_[jp]);
-    L.q = L.h * L.u;
-    R.q = R.h * R.u;
-    const double cL = L.celerity(chi, g_cos_), cR = R.celerity(chi, g_cos_);
-    const double ap = std::max({chi * L.u + cL - cf, chi * R.u + cR - cf, 0.0});
-    const double am = std::min({chi * L.u - cL - cf, chi * R.u - cR - cf, 0.0});
-    double fh, fq;
-    if (ap - am > 1e-300) {
-      const double w = 1.0 / (ap - am);
-      fh = w * (ap * L.flux_h(cf) - am * R.flux_h(cf) + ap * am * (R.h - L.h));
-      fq = w * (ap * L.flux_q(chi, g_cos_, cf) - am * R.flux_q(chi, g_cos_, cf) +
-                ap * am * (R.q - L.q));
-    } else {
-      fh = 0.5 * (L.flux_h(cf) + R.flux_h(cf));
-      fq = 0.5 * (L.flux_q(chi, g_cos_, cf) + R.flux_q(chi, g_cos_, cf));
-    }
-    if (space_.viscous) {
-      const double hf = 0.5 * (std::max(H(j), 0.0) + std::max(H(jp), 0.0));
-      const double du = velocity(H(jp), Q(jp)) - velocity(H(j), Q(j));
-      fq -= base_.nu * hf * std::sqrt(hf) * du / dx_;  // (7.4): nu h^{3/2} du/dx
-    }
-    face_flux_h_[j] = fh;
-    face_flux_q_[j] = fq;
+  // 1.-2. Fluxes at the faces -1/2 .. nx - 1/2.
+  switch (space_.reconstruction) {
+    case Reconstruction::Central:
+      face_fluxes<Reconstruction::Central>();
+      break;
+    case Reconstruction::Minmod:
+      face_fluxes<Reconstruction::Minmod>();
+      break;
+    case Reconstruction::MC:
+      face_fluxes<Reconstruction::MC>();
+      break;
+    case Reconstruction::VanAlbada:
+      face_fluxes<Reconstruction::VanAlbada>();
+      break;
   }
 
-  // 3. Flux differences and the friction/gravity source.
+  // 3. Friction mu(I) once per cell, at I = inertial_scale |u| / h^{3/2} (DESIGN.md §4, (7.1)).
+  double* I = inertial_.data();
+  for (std::size_t j = 0; j < n; ++j) {
+    const double hj = std::max(h[j + g], 1e-100);
+    I[j] = inertial_scale_ * std::fabs(u[j + g]) / (hj * std::sqrt(hj));
+  }
+  curve_.mu_many(inertial_, mu_);
+
+  // 4. Flux differences and the friction/gravity source (momentum_source, cell by cell).
   const double inv_dx = 1.0 / dx_;
+  const double* fh = face_flux_h_.data();
+  const double* fq = face_flux_q_.data();
+  const double* mu = mu_.data();
   for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t jm = (j + n - 1) % n;
-    dUdt[2 * j] = -(face_flux_h_[j] - face_flux_h_[jm]) * inv_dx;  // (7.3)
-    dUdt[2 * j + 1] =
-        -(face_flux_q_[j] - face_flux_q_[jm]) * inv_dx + momentum_source(H(j), Q(j));  // (7.4)
+    const double hj = h[j + g], uj = u[j + g];
+    // at rest (u = 0, or I = 0) static friction balances gravity up to mu(0+)
+    const double m = ((uj != 0.0) & (I[j] > 0.0)) ? std::copysign(mu[j], uj) : mu_rest_;
+    const double source = hj > 0.0 ? g_cos_ * hj * (tan_zeta_ - m) : 0.0;  // (7.4)
+    dUdt[2 * j] = -(fh[j + 1] - fh[j]) * inv_dx;                           // (7.3)
+    dUdt[2 * j + 1] = -(fq[j + 1] - fq[j]) * inv_dx + source;              // (7.4)
   }
 }
 

@@ -34,6 +34,7 @@ struct CompareOptions {
   std::string resolution = "default";
   int nx = 0, nz = 0;          // 2D grid; 0: from --resolution
   std::size_t nx_depthavg = 0; // 0: from --resolution
+  std::string frame_speed = "linear";  // depth-averaged frame: linear (co-moving) or 0 (lab)
   int viscosity_passes = 1;
 };
 
@@ -159,6 +160,7 @@ void run_compare(const CompareOptions& o) {
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
+  depthavg.co_moving = o.frame_speed == "linear";
 
   const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
   const std::string png = o.output.plot.empty() ? "compare.png" : o.output.plot;
@@ -242,6 +244,11 @@ void add_compare_command(CLI::App& app) {
   sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--nz", o->nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);
   sub->add_option("--nx-depthavg", o->nx_depthavg, "depth-averaged cells (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  sub->add_option("--frame-speed", o->frame_speed,
+                  "depth-averaged model's frame {linear,0}: moving at the (7.11) phase speed, or "
+                  "the lab frame; output is in the lab frame")
+      ->check(one_of({"linear", "0"}))
+      ->capture_default_str();
   sub->add_option("--viscosity-passes", o->viscosity_passes,
                   "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
                   "(1 is second order in time already; more passes cost n times as much)")

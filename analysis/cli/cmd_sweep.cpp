@@ -54,11 +54,7 @@ depthavg::LinearRunParams linear_params(const SweepOptions& o) {
   lp.tolerance = o.tolerance;
   lp.t_end = o.t_end;
   lp.reconstruction = depthavg::parse_reconstruction(o.depthavg.limiter);
-  if (o.depthavg.frame_speed == "linear")
-    lp.co_moving = true;
-  else if (o.depthavg.frame_speed != "0")
-    throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +
-                     "' is not allowed for sweep; valid values {0, linear}");
+  lp.co_moving = o.depthavg.frame_speed == "linear";
   return lp;
 }
 
@@ -69,10 +65,14 @@ void run_sweep(const SweepOptions& o) {
   spec.chute.angle_deg = o.flow.angle_deg;
   spec.chute.h0 = o.flow.h0;
   (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
+  if (o.depthavg.frame_speed != "linear" && o.depthavg.frame_speed != "0")
+    throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +
+                     "' is not allowed for sweep; valid values {0, linear}");
   spec.Lx = domain_lengths(o.Lx);
   spec.depthavg = o.model != "twod";
   spec.twod = o.model != "depthavg";
   spec.depthavg_settings.chi = parse_chi(o.depthavg.chi);
+  spec.depthavg_settings.co_moving = o.depthavg.frame_speed == "linear";
   spec.jobs = o.jobs;
   nlohmann::json settings = {{"model", o.model}, {"chi", spec.depthavg_settings.chi}};
   std::ostringstream title;
@@ -92,7 +92,8 @@ void run_sweep(const SweepOptions& o) {
     spec.twod_settings.viscosity_passes = o.viscosity_passes;
     // (recorded only when not the default, so sweeps stored before the option still resume)
     if (o.viscosity_passes != 1) settings["viscosity_passes"] = o.viscosity_passes;
-    settings.update({{"resolution", o.resolution},
+    settings.update({{"frame_speed", o.depthavg.frame_speed},
+                     {"resolution", o.resolution},
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});

@@ -76,7 +76,8 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
         {"twod_rho_light", twod.rho_light}, {"twod_eta_light", twod.eta_light},
         {"twod_viscosity_passes", double(twod.viscosity_passes)},
         {"depthavg_nx", double(depthavg.nx)}, {"depthavg_chi", depthavg.chi},
-        {"depthavg_rtol", depthavg.rtol}, {"I_zeta", c.base.I_zeta}, {"u_mean", c.base.u_mean},
+        {"depthavg_rtol", depthavg.rtol},
+        {"depthavg_co_moving", depthavg.co_moving ? 1.0 : 0.0}, {"I_zeta", c.base.I_zeta}, {"u_mean", c.base.u_mean},
         {"Fr", c.base.Fr}})
     out.attribute("/", name, v);
   out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));

@@ -46,6 +46,7 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   space.nx = s.nx;
   space.chi = s.chi;
   space.reconstruction = s.limiter ? depthavg::Reconstruction::MC : depthavg::Reconstruction::Central;
+  space.frame_speed = s.co_moving ? exact.phase_speed : 0.0;
   depthavg::IntegratorParams integ;
   integ.rtol = s.rtol;
   integ.atol = 1e-4 * s.rtol * c.h0;

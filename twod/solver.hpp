@@ -14,8 +14,8 @@
 #include "parameters.hpp"
 #include "projection.hpp"
 #include "properties.hpp"
-#include "vof_advection.hpp"
 #include "viscous_step.hpp"
+#include "vof_advection.hpp"
 
 namespace granbench::twod {
 
@@ -30,9 +30,9 @@ struct DivergenceError : std::runtime_error {
 // its linear solves. Saved in checkpoints so that a restarted run repeats the uninterrupted one
 // exactly.
 struct WarmStart {
-  std::vector<double> viscous_increment;  // u* - u^n of the last predictor (solver unknowns)
-  double viscous_dt = 0.0;                // the step of that predictor
-  std::vector<double> pressure_increment; // the last projection's delta p
+  std::vector<double> viscous_increment;   // u* - u^n of the last predictor (solver unknowns)
+  double viscous_dt = 0.0;                 // the step of that predictor
+  std::vector<double> pressure_increment;  // the last projection's delta p
   // The second-order step's memory: A^n (Adams-Bashforth) and the last step taken.
   std::vector<double> advection_u, advection_w;
   double previous_dt = 0.0;
@@ -42,11 +42,11 @@ struct RunStatistics {
   long steps = 0;
   long viscous_iterations = 0, projection_iterations = 0;
   long factorisations = 0;
-  double initial_volume = 0.0;   // granular volume at the start [m^2 per unit width]
-  double volume = 0.0;           // now
-  double clipped_volume = 0.0;   // volume touched by clipping f to [0, 1]
+  double initial_volume = 0.0;  // granular volume at the start [m^2 per unit width]
+  double volume = 0.0;          // now
+  double clipped_volume = 0.0;  // volume touched by clipping f to [0, 1]
   double dt_min = 0.0, dt_max = 0.0, dt_last = 0.0;
-  double max_divergence = 0.0;   // max |div u| after the last projection [1/s]
+  double max_divergence = 0.0;  // max |div u| after the last projection [1/s]
   double mass_error() const {
     return initial_volume > 0.0 ? (volume - initial_volume) / initial_volume : 0.0;
   }
@@ -86,8 +86,7 @@ class Solver {
   Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
   std::vector<double> adv_u_old_, adv_w_old_;  // A^n kept for the next step (advection_ab2)
-  std::vector<double> h_before_;               // column heights before the VOF step
-  std::vector<double> p_new_level_;            // p* (viscosity_pressure.cpp)
+  std::vector<double> h_before_, h_after_;     // column heights before and after the VOF step
   std::vector<double> force_u_;                // surface-row pressure correction per u-face
   double dt_previous_ = 0.0;                   // the last step taken (shortened or not)
   RunStatistics stats_;

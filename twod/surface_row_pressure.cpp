@@ -33,12 +33,11 @@
 
 #include <cmath>
 
-#include "diagnostics.hpp"
-
 namespace granbench::twod {
 
 std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
-                                                    const std::vector<double>& f) {
+                                                    const std::vector<double>& f,
+                                                    const std::vector<double>& h) {
   const double g_cos = params.rheology.material.g * std::cos(params.zeta);
   const double rho_g = params.rheology.material.bulk_density(), rho_l = params.rheology.rho_light;
   auto rho = [&](double fr) { return fr * rho_g + (1.0 - fr) * rho_l; };
@@ -53,7 +52,6 @@ std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverP
       P[g.at(i, k - 1)] = pk;
     }
   }
-  const std::vector<double> h = surface_heights(g, f);
   std::vector<double> correction(g.cells(), 0.0);
   for (int k = 0; k < g.nz; ++k)
     for (int i = 0; i < g.nx; ++i) {

@@ -10,8 +10,10 @@ namespace granbench::twod {
 
 // The correction, per u-face [N per unit width], to add to the predictor's pressure force
 // -dz (p_i - p_{i-1}) so that a partly filled u-face feels the hydrostatic force on the grains it
-// holds; zero (to round-off) on full and empty faces. f: the volume fractions of the new level.
+// holds; zero on full and empty faces. f: the volume fractions of the new level, h their column
+// heights (surface_heights).
 std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
-                                                    const std::vector<double>& f);
+                                                    const std::vector<double>& f,
+                                                    const std::vector<double>& h);
 
 }  // namespace granbench::twod

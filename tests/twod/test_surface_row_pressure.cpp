@@ -39,7 +39,7 @@ void check(double rho_light) {
       p[g.at(i, k - 1)] = pk;
     }
   }
-  const std::vector<double> correction = surface_row_pressure_correction(g, params, f);
+  const std::vector<double> correction = surface_row_pressure_correction(g, params, f, h);
   int partly_filled = 0, same_row = 0;
   for (int k = 0; k < g.nz; ++k)
     for (int i = 1; i < g.nx; ++i) {  // i = 0 faces the jump of h across the periodic boundary

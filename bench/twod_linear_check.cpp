@@ -266,7 +266,7 @@ int main(int argc, char** argv) {
     const double delta = a.num("layer", 0.0) / h0;
     auto lam_of = [&](double fn, double fs, double fq) {
       const auto P = linear2d::assemble_pencil(b, k_hat, fine, linear2d::VerticalMap::SquareRoot,
-                                              {delta, fn, fs, fq});
+                                               {delta, fn, fs, fq});
       const auto ev = linear2d::finite_eigenvalues(P, lam_hat + cd(0.01, 0.013));
       cd best = ev.front();
       for (const cd& e : ev)

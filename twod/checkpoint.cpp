@@ -36,7 +36,8 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
     out.write("/warm_start/viscous_increment", w.viscous_increment);
     out.write("/warm_start/viscous_dt", std::span<const double>(&w.viscous_dt, 1));
   }
-  if (!w.pressure_increment.empty()) out.write("/warm_start/pressure_increment", w.pressure_increment);
+  if (!w.pressure_increment.empty())
+    out.write("/warm_start/pressure_increment", w.pressure_increment);
   if (!w.advection_u.empty()) {
     out.write("/warm_start/advection_u", w.advection_u);
     out.write("/warm_start/advection_w", w.advection_w);
@@ -46,7 +47,9 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
 }
 
 Checkpoint read_checkpoint(const std::string& path) {
-  auto scalar = [&](const char* name) { return h5_read_doubles(path, std::string("/state/") + name).at(0); };
+  auto scalar = [&](const char* name) {
+    return h5_read_doubles(path, std::string("/state/") + name).at(0);
+  };
   Checkpoint c;
   c.grid = Grid(int(scalar("nx")), int(scalar("nz")), scalar("Lx"), scalar("Lz"));
   c.state = Fields(c.grid);

@@ -31,11 +31,16 @@ struct Properties {
   std::vector<double> rho_u, rho_w;  // face densities (rho_w has nz + 1 rows)
   std::vector<double> eta_c, eta_n;  // cell-centre and corner viscosities
   std::vector<double> eta_c_tangent, eta_n_tangent;
-  std::vector<double> I_c;           // inertial number (2.8) at cell centres (diagnostic)
+  std::vector<double> I_c;  // inertial number (2.8) at cell centres (diagnostic)
 
   explicit Properties(const Grid& g = Grid())
-      : rho_u(g.cells()), rho_w(g.w_faces()), eta_c(g.cells()), eta_n(g.corners()),
-        eta_c_tangent(g.cells()), eta_n_tangent(g.corners()), I_c(g.cells()) {}
+      : rho_u(g.cells()),
+        rho_w(g.w_faces()),
+        eta_c(g.cells()),
+        eta_n(g.corners()),
+        eta_c_tangent(g.cells()),
+        eta_n_tangent(g.corners()),
+        I_c(g.cells()) {}
 };
 
 }  // namespace granbench::twod

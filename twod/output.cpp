@@ -52,10 +52,10 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("viscosity_tangent", p.viscosity_tangent ? 1.0 : 0.0);
   a("hydrostatic_viscosity_pressure", p.hydrostatic_viscosity_pressure ? 1.0 : 0.0);
   a("surface_row_pressure", p.surface_row_pressure ? 1.0 : 0.0);
-  out.attribute(group, "interface_pressure",
-                std::string(r.interface_pressure == InterfacePressure::Extrapolated
-                                ? "extrapolated"
-                                : "cell-average"));
+  out.attribute(
+      group, "interface_pressure",
+      std::string(r.interface_pressure == InterfacePressure::Extrapolated ? "extrapolated"
+                                                                          : "cell-average"));
 }
 
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,

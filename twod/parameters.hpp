@@ -22,7 +22,8 @@ namespace granbench::twod {
 enum class ViscosityMixing { Harmonic, Arithmetic };
 
 // Pressure at which the granular viscosity of interface cells and corners is evaluated:
-//   CellAverage   the cell-centre p (corners: mean of the four cells), as everywhere else. At a corner on a flat surface lying on a cell face this p is
+//   CellAverage   the cell-centre p (corners: mean of the four cells), as everywhere else. At a
+//   corner on a flat surface lying on a cell face this p is
 //                 rho g cos(zeta) dz/4 > 0 while the weight above it is ~0, so
 //                 mu(I) p = tau needs I -> 0: eta hits eta_max and the corner is a plug that
 //                 locks the top half-cell of grains to the light fluid (docs/twod-validation.md).
@@ -58,8 +59,8 @@ struct Rheology {
   // and 1e-3 Pa s (air-like) its drag on the surface cost ~20 % of the §7 growth rate, because
   // 1e-3 Pa s is the granular tangent viscosity one cell below the surface at 32 cells per h0
   // (docs/twod-validation.md, light-fluid sensitivity).
-  double rho_light = 0.15;     // light-fluid density [kg m^-3]
-  double eta_light = 1e-4;     // light-fluid viscosity [Pa s]
+  double rho_light = 0.15;  // light-fluid density [kg m^-3]
+  double eta_light = 1e-4;  // light-fluid viscosity [Pa s]
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
   InterfacePressure interface_pressure = InterfacePressure::Extrapolated;
   // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =
@@ -69,16 +70,16 @@ struct Rheology {
 
 struct SolverParams {
   Rheology rheology;
-  double zeta = 0.0;           // slope angle [rad]
-  double cfl = 0.4;            // advective Courant number per direction (< 0.5 for the VOF)
-  double dt_max = 1e-3;        // [s]
-  double dt_initial = 1e-5;    // first step [s]
-  double dt_growth = 1.1;      // largest ratio dt_{n+1}/dt_n
+  double zeta = 0.0;                // slope angle [rad]
+  double cfl = 0.4;                 // advective Courant number per direction (< 0.5 for the VOF)
+  double dt_max = 1e-3;             // [s]
+  double dt_initial = 1e-5;         // first step [s]
+  double dt_growth = 1.1;           // largest ratio dt_{n+1}/dt_n
   double solver_tolerance = 1e-10;  // relative residual of the projection (sets div u, mass)
   double viscous_tolerance = 1e-8;  // relative residual of the viscous solve
   LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
   LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;
-  double velocity_limit = 50.0;     // |u| above this is reported as divergence [m/s]
+  double velocity_limit = 50.0;  // |u| above this is reported as divergence [m/s]
   // The stress at the new level without a second solve (solver.cpp, viscous_step.cpp):
   //   viscosity_tangent: tau^{n+1} = tau(D^n, p*) + C^n : (D^{n+1} - D^n) with the consistent
   //     tangent C of the strain-rate dependence (false: eta from u^n, lagged one step);

@@ -43,10 +43,13 @@ class ViscousOperator {
   // Where a matrix entry sits relative to its row's line: the diagonal, the line neighbour
   // below or above, or outside the line.
   enum class Entry { Diag, Lower, Upper, Off };
-  template <class Visit> void visit_u_row(int i, int k, Visit&& visit) const;
-  template <class Visit> void visit_w_row(int i, int k, Visit&& visit) const;
+  template <class Visit>
+  void visit_u_row(int i, int k, Visit&& visit) const;
+  template <class Visit>
+  void visit_w_row(int i, int k, Visit&& visit) const;
   // each(row, entries) for every row in index order; entries(visit) visits that row.
-  template <class Each> void for_each_row(Each&& each) const;
+  template <class Each>
+  void for_each_row(Each&& each) const;
   // One line of length `length` from row `first`; visit_row_m(m, visit) visits its m-th row.
   template <class RowVisit>
   void solve_line(int first, int length, const Eigen::VectorXd& r, Eigen::VectorXd& z,
@@ -56,9 +59,9 @@ class ViscousOperator {
 
   Grid g_;
   int nu_;
-  double ixx_, izz_, ixz_;             // 1/dx^2, 1/dz^2, 1/(dx dz)
-  std::vector<double> mass_u_, mass_w_;  // rho V / dt on u- and interior w-faces
-  std::vector<double> kc_, kn_;          // 2 eta_c V per cell, eta_n V per corner
+  double ixx_, izz_, ixz_;                  // 1/dx^2, 1/dz^2, 1/(dx dz)
+  std::vector<double> mass_u_, mass_w_;     // rho V / dt on u- and interior w-faces
+  std::vector<double> kc_, kn_;             // 2 eta_c V per cell, eta_n V per corner
   std::vector<double> lower_, inv_m_, cp_;  // Thomas factors per unknown
 };
 

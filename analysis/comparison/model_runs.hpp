@@ -18,14 +18,14 @@ namespace granbench {
 enum class RunOutcome { Completed, Interrupted, Diverged };
 
 struct ModelRun {
-  std::string model;            // "depthavg" or "twod"
+  std::string model;  // "depthavg" or "twod"
   SurfaceSeries series;
   RunOutcome outcome = RunOutcome::Completed;
-  std::string message;          // what stopped it early (time, place, quantity)
+  std::string message;  // what stopped it early (time, place, quantity)
   long steps = 0;
   double wall_seconds = 0.0;
-  double mass_error = 0.0;      // relative
-  double flux = 0.0;            // mean downslope flux per unit width at the end [m^2/s]
+  double mass_error = 0.0;          // relative
+  double flux = 0.0;                // mean downslope flux per unit width at the end [m^2/s]
   double I_min = 0.0, I_max = 0.0;  // 2D only: over granular cells at the end
   double illposed_fraction = 0.0;   // 2D only
   double seeded_growth_rate = 0.0;  // the theory's growth rate of the seeded mode, if seeded
@@ -33,8 +33,8 @@ struct ModelRun {
 
 struct DepthAvgSettings {
   std::size_t nx = 256;
-  double chi = 1.0;             // shape factor of the momentum flux
-  bool limiter = false;         // MC limiter (nonlinear runs) instead of central slopes
+  double chi = 1.0;      // shape factor of the momentum flux
+  bool limiter = false;  // MC limiter (nonlinear runs) instead of central slopes
   double rtol = 1e-7;
   // Solve in the frame moving at the seeded mode's (7.11) phase speed (depthavg/rhs.hpp); the
   // series comes back in the lab frame. ~20 times fewer steps than the lab frame.
@@ -43,11 +43,11 @@ struct DepthAvgSettings {
 
 struct TwodSettings {
   int nx = 160, nz = 32;
-  double Lz_over_h0 = 0.0;      // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
-  double eta_max = 2.0;         // granular viscosity cap [Pa s] (DESIGN.md §8)
+  double Lz_over_h0 = 0.0;  // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
+  double eta_max = 2.0;     // granular viscosity cap [Pa s] (DESIGN.md §8)
   double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
-  int chebyshev_N = 32;         // resolution of the eigenmode used for seeding
-  int viscosity_passes = 1;     // Picard passes for eta per step (twod/parameters.hpp)
+  int chebyshev_N = 32;      // resolution of the eigenmode used for seeding
+  int viscosity_passes = 1;  // Picard passes for eta per step (twod/parameters.hpp)
   // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep
   // keeps that dx at every Lx, so that every point has the resolution the preset was judged at.
   static constexpr double reference_length = 0.08;
@@ -60,9 +60,10 @@ struct TwodSettings {
 };
 
 // The named grids of compare and sweep ({coarse, default, fine}): 2D grids with 16, 32 and 64
-// cells per h0 (Lz ~ 2 h0, the surface mid-cell) and 128, 256, 512 depth-averaged cells. docs/twod-validation.md shows
-// the 2D growth rate converging from below with the cells per h0 and first turning positive, as
-// the 2D theory says, at 32. Throws std::invalid_argument for another name.
+// cells per h0 (Lz ~ 2 h0, the surface mid-cell) and 128, 256, 512 depth-averaged cells.
+// docs/twod-validation.md shows the 2D growth rate converging from below with the cells per h0 and
+// first turning positive, as the 2D theory says, at 32. Throws std::invalid_argument for another
+// name.
 struct GridPreset {
   int twod_nx, twod_nz;
   std::size_t depthavg_nx;

@@ -69,6 +69,6 @@ TEST(CutoffSides, TwoDModelGrowsAboveTheCutoffAtTheRateAndSpeedOfTheory) {
   EXPECT_NEAR(m.spectral.phase_speed / t.exact_2d.phase_speed, 1.0, 0.005);
   EXPECT_LT(r.mass_error, 1e-12);
   std::cout << "twod 160x64, Lx = 8 cm: growth " << m.spectral.growth_rate << " 1/s (theory "
-            << t.exact_2d.growth_rate << "), phase speed " << m.spectral.phase_speed << " m/s (theory "
-            << t.exact_2d.phase_speed << ")\n";
+            << t.exact_2d.growth_rate << "), phase speed " << m.spectral.phase_speed
+            << " m/s (theory " << t.exact_2d.phase_speed << ")\n";
 }

@@ -50,20 +50,20 @@ double ViscosityModel::inertial_number(double p, double D) const {
 }
 
 double ViscosityModel::granular(double p, double D) const {
-  if (r_.newtonian_eta > 0.0) return r_.newtonian_eta;
-  if (p <= 0.0) return r_.eta_min;
-  const double Df = std::max(D, r_.D_min);
-  const double eta = curve_.mu(inertial_number(p, Df)) * p / (2.0 * Df);  // (2.11)
-  return std::clamp(eta, r_.eta_min, r_.eta_max);
+  return granular_with_tangent(p, D).eta;
 }
 
-double ViscosityModel::tangent_ratio(double p, double D) const {
-  if (r_.newtonian_eta > 0.0 || p <= 0.0 || D <= r_.D_min) return 1.0;
-  const double I = inertial_number(p, D);
+GranularViscosity ViscosityModel::granular_with_tangent(double p, double D) const {
+  if (r_.newtonian_eta > 0.0) return {r_.newtonian_eta, 1.0};
+  if (p <= 0.0) return {r_.eta_min, 1.0};
+  const double Df = std::max(D, r_.D_min);
+  const double I = inertial_number(p, Df);
   const double mu = curve_.mu(I);
-  const double eta = mu * p / (2.0 * D);                   // (2.11)
-  if (eta <= r_.eta_min || eta >= r_.eta_max) return 1.0;  // eta does not follow |D| there
-  return std::clamp(I * curve_.dmu_dI(I) / mu, 0.0, 1.0);  // Gamma / mu
+  const double eta = mu * p / (2.0 * Df);  // (2.11)
+  // eta does not follow |D| where |D| is floored or eta is capped or floored: tangent = secant
+  if (D <= r_.D_min || eta <= r_.eta_min || eta >= r_.eta_max)
+    return {std::clamp(eta, r_.eta_min, r_.eta_max), 1.0};
+  return {eta, std::clamp(I * curve_.dmu_dI(I) / mu, 0.0, 1.0)};  // Gamma / mu
 }
 
 double ViscosityModel::mix_tangent(double f, double eta_g, double eta_gt) const {
@@ -112,8 +112,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       eta = eta_t = eta_l;
       return;
     }
-    const double eta_g = model.granular(pr, D);
-    const double ratio = model.tangent_ratio(pr, D);
+    const auto [eta_g, ratio] = model.granular_with_tangent(pr, D);
     const double eta_gt = eta_g * (1.0 - (1.0 - ratio) * weight);
     eta = model.mix(fr, eta_g);
     eta_t = model.mix_tangent(fr, eta_g, eta_gt);

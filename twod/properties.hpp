@@ -9,6 +9,11 @@
 
 namespace granbench::twod {
 
+struct GranularViscosity {
+  double eta = 0.0;            // the secant viscosity (2.11) [Pa s]
+  double tangent_ratio = 1.0;  // Gamma / mu, in [0, 1]
+};
+
 class ViscosityModel {
  public:
   explicit ViscosityModel(const Rheology& r);
@@ -16,10 +21,10 @@ class ViscosityModel {
   double inertial_number(double p, double D) const;
   // Granular viscosity (2.11) with p clipped at 0, |D| floored and eta in [eta_min, eta_max].
   double granular(double p, double D) const;
-  // Its tangent ratio Gamma/mu (Gamma = I mu'(I)): d(eta |D|)/d|D| = eta Gamma/mu, the stiffness of
-  // the stress against a change of |D| along D, relative to the secant eta. 1 where eta does not
-  // depend on |D| (capped, floored, |D| below its floor, p <= 0, Newtonian).
-  double tangent_ratio(double p, double D) const;
+  // The same with its tangent ratio Gamma/mu (Gamma = I mu'(I)): d(eta |D|)/d|D| = eta Gamma/mu,
+  // the stiffness of the stress against a change of |D| along D, relative to the secant eta. 1
+  // where eta does not depend on |D| (capped, floored, |D| at its floor, p <= 0, Newtonian).
+  GranularViscosity granular_with_tangent(double p, double D) const;
   // The mixture viscosity of a cell holding granular fraction f.
   double mix(double f, double eta_g) const;
   // The tangent of the mixture viscosity when eta_g has the tangent eta_gt.

@@ -18,12 +18,38 @@
 // One visitor per row type serves the product, the preconditioner and the assembly, so the
 // three cannot disagree; tests/twod/test_viscous_operator.cpp checks the product against the
 // assembled matrix and the symmetry.
+//
+// Threads (parallel.hpp): rows are independent in the product and lines in the factors, so both
+// are parallel over columns. The preconditioner visits the lines in zebra order (even columns,
+// then odd ones): a u-line couples to the u-lines of the neighbouring columns and to w-lines
+// only, a w-line to the neighbouring w-lines and to u-lines only, so the lines of one colour and
+// kind are independent and solved in parallel, with the same result for any thread count.
 #include "viscous_operator.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
 namespace granbench::twod {
+
+namespace {
+
+// solve(i) for the columns i of one colour (first = 0: even, 1: odd) of an nx-column periodic
+// grid. They are not neighbours of each other, except column nx - 1 and column 0 when nx is odd:
+// that last column is solved alone, after the others (ascending) or before them (descending),
+// so that the descending pass is the exact reverse of the ascending one. The others run in
+// parallel (their order does not matter: they do not read each other's unknowns).
+template <class Solve>
+void zebra_colour(int nx, int first, bool ascending, Solve&& solve) {
+  const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
+  const bool last_alone = nx % 2 == 1 && first == 0 && count > 1;
+  const int free = last_alone ? count - 1 : count;
+  if (last_alone && !ascending) solve(nx - 1);
+#pragma omp parallel for schedule(static)
+  for (int m = 0; m < free; ++m) solve(first + 2 * m);
+  if (last_alone && ascending) solve(nx - 1);
+}
+
+}  // namespace
 
 ViscousOperator::ViscousOperator(const Grid& g)
     : g_(g),
@@ -109,6 +135,7 @@ void ViscousOperator::set_stress(const std::vector<double>& eta_c,
   // along a line read contiguous memory.
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < nx; ++i)
     for (int k = 0; k <= nz; ++k) {
       const std::size_t c = g_.at(i, k);
@@ -124,14 +151,15 @@ void ViscousOperator::set(const Properties& props, const std::vector<double>& et
   set_stress(eta_c, eta_n);
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < nx; ++i)
     for (int k = 0; k < nz; ++k) {
       const std::size_t c = g_.at(i, k);
       mass_u_[i * nz + k] = props.rho_u[c] * V / dt;
       if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V / dt;
     }
-  // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k.
-  for_each_row([&](int row, auto&& entries) {
+  // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k (lines in parallel).
+  auto factor_row = [&](int row, auto&& entries) {
     double diag = 0.0, lower = 0.0, upper = 0.0;
     bool continues_line = false;  // a lower line neighbour exists: it is row - 1
     entries([&](int, double value, Entry e) {
@@ -148,16 +176,36 @@ void ViscousOperator::set(const Properties& props, const std::vector<double>& et
     lower_[row] = lower;
     inv_m_[row] = 1.0 / m;
     cp_[row] = upper * inv_m_[row];
-  });
+  };
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < nx; ++i)
+    for (int k = 0; k < nz; ++k)
+      factor_row(u_index(i, k), [&](auto&& visit) { visit_u_row(i, k, visit); });
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < nx; ++i)
+    for (int k = 1; k < nz; ++k)
+      factor_row(w_index(i, k), [&](auto&& visit) { visit_w_row(i, k, visit); });
 }
 
 void ViscousOperator::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(size());
-  for_each_row([&](int row, auto&& entries) {
+  const int nx = g_.nx, nz = g_.nz;
+  auto row_product = [&](int row, auto&& entries) {
     double sum = 0.0;
     entries([&](int col, double value, Entry) { sum += value * x[col]; });
     y[row] = sum;
-  });
+  };
+#pragma omp parallel
+  {
+#pragma omp for schedule(static) nowait
+    for (int i = 0; i < nx; ++i)
+      for (int k = 0; k < nz; ++k)
+        row_product(u_index(i, k), [&](auto&& visit) { visit_u_row(i, k, visit); });
+#pragma omp for schedule(static)
+    for (int i = 0; i < nx; ++i)
+      for (int k = 1; k < nz; ++k)
+        row_product(w_index(i, k), [&](auto&& visit) { visit_w_row(i, k, visit); });
+  }
 }
 
 template <class RowVisit>
@@ -189,10 +237,17 @@ void ViscousOperator::solve_w_line(int i, const Eigen::VectorXd& r, Eigen::Vecto
 void ViscousOperator::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   z.setZero(size());
   const int nx = g_.nx;
-  for (int i = 0; i < nx; ++i) solve_u_line(i, r, z);
-  for (int i = 0; i < nx; ++i) solve_w_line(i, r, z);
-  for (int i = nx - 1; i >= 0; --i) solve_w_line(i, r, z);
-  for (int i = nx - 1; i >= 0; --i) solve_u_line(i, r, z);
+  auto u_line = [&](int i) { solve_u_line(i, r, z); };
+  auto w_line = [&](int i) { solve_w_line(i, r, z); };
+  // forward: u-lines even, odd; w-lines even, odd. backward: the exact reverse.
+  zebra_colour(nx, 0, true, u_line);
+  zebra_colour(nx, 1, true, u_line);
+  zebra_colour(nx, 0, true, w_line);
+  zebra_colour(nx, 1, true, w_line);
+  zebra_colour(nx, 1, false, w_line);
+  zebra_colour(nx, 0, false, w_line);
+  zebra_colour(nx, 1, false, u_line);
+  zebra_colour(nx, 0, false, u_line);
 }
 
 void ViscousOperator::assemble(PatternedMatrix& A) const {

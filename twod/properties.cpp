@@ -141,9 +141,11 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // highest full cell below the surface.
   const bool extrapolate = model.rheology().interface_pressure == InterfacePressure::Extrapolated;
   std::vector<double> hcol(nx, 0.0);
-  if (extrapolate)
-    for (int k = 0; k < nz; ++k)  // (serial: a sum in k order)
-      for (int i = 0; i < nx; ++i) hcol[i] += f[g.at(i, k)] * g.dz;
+  if (extrapolate) {
+#pragma omp parallel for schedule(static)  // columns; each sums over k in the serial order
+    for (int i = 0; i < nx; ++i)
+      for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
+  }
   // p at height z in column i (or the mean of columns i-1, i when `corner`): linear between the
   // centre of the highest row below z whose cells are full and, at the surface height h, the
   // pressure p_s of the lowest light-fluid row above (its overburden; 0 if there is none).

@@ -9,6 +9,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "parallel.hpp"
+
 namespace granbench::cli {
 
 namespace {
@@ -98,6 +100,26 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   // Expanded into options before parsing (config_file.hpp); declared here for --help.
   app.add_option("--config")->description("read options from a TOML file (the command line overrides it)");
+}
+
+void add_threads_option(CLI::App& app) {
+  app.add_option_function<int>(
+         "--threads", [](const int& n) { twod::set_thread_count(n); },
+         "OpenMP threads of the 2D solver, integer >= 1 (default: OMP_NUM_THREADS or all cores)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::size_t used = 0;
+            long n = 0;
+            try {
+              n = std::stol(text, &used);
+            } catch (const std::exception&) {
+              used = 0;
+            }
+            if (used == 0 || used != text.size() || n < 1 || n > 1024)
+              return "'" + text + "' is not an integer in the valid range [1, 1024]";
+            return {};
+          },
+          "in [1, 1024]", "thread_count"));
 }
 
 nlohmann::json number_or_null(double v) {

@@ -138,6 +138,7 @@ void add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   add_depthavg_options(*sub, o->depthavg);
   add_output_options(*sub, o->output);
+  add_threads_option(*sub);
   sub->callback([o] { run_sweep(*o); });
 }
 

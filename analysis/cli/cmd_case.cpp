@@ -59,7 +59,7 @@ nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o,
   j["outputs"] = {h5, png_prefix + "_profiles.png", png_prefix + "_snapshots.png"};
   if (!result.grid_dependence.empty()) j["outputs"].push_back(png_prefix + "_grid_dependence.png");
   for (const auto& r : result.runs)
-    if (r.status == "interrupted") exit_code = 130;
+    if (r.status == "interrupted") exit_code = guard.exit_code();
   return j;
 }
 
@@ -94,17 +94,18 @@ nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions&
   run.output.out = h5;
   run.output.quiet = o.output.quiet;
   TwodRunReport report;
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   try {
     check_run_options(run);
-    const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
     report = run_twod_model(run, twod, guard.flag());
   } catch (const UsageError& e) {
     throw UsageError("case file " + file.path() + ", table [run]: " + e.what());
   }
-  exit_code = report.status == twod::RunStatus::Completed     ? 0
-              : report.status == twod::RunStatus::Interrupted ? 130
-              : report.status == twod::RunStatus::Diverged    ? 3
-                                                              : 1;
+  try {
+    throw_unless_completed(report, guard);
+  } catch (const CommandFailed& e) {
+    exit_code = e.exit_code;  // after the figures of what was computed
+  }
   if (exit_code != 0) std::cerr << "granbench: " << report.message << "\n";
   nlohmann::json j = {{"case", file.name()}, {"resolution", o.resolution}, {"run", report.json}};
   const std::string png_prefix = path_in(o, file.name());
@@ -209,7 +210,8 @@ void run_case(const CaseOptions& o) {
   j["kind"] = kind;
   if (o.output.json) print_json(j);
   else print_summary(kind, j);
-  if (exit_code == 130) throw CommandFailed("interrupted; the samples computed so far were kept", 130);
+  if (exit_code == kExitSigint || exit_code == kExitSigterm)
+    throw CommandFailed("interrupted; the samples computed so far were kept", exit_code);
   if (exit_code != 0) throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")", exit_code);
 }
 

@@ -16,6 +16,7 @@
 #include "compare.hpp"
 #include "compare_output.hpp"
 #include "measurement_json.hpp"
+#include "output_checks.hpp"
 #include "run_model.hpp"
 
 namespace granbench::cli {
@@ -164,7 +165,12 @@ void run_compare(const CompareOptions& o) {
 
   const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
   const std::string png = o.output.plot.empty() ? "compare.png" : o.output.plot;
-  InterruptGuard guard;
+  // Before any work (failure_policy.hpp): a path that cannot be written, or a sampling interval
+  // that would fill memory, is a usage error, not a lost computation.
+  require_writable(h5, "--out");
+  require_writable(png, "--plot");
+  if (o.dt_out > 0.0) require_record_count("--dt-out", o.t_end, o.dt_out, kMaxSamples, "samples");
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   std::mutex io;
   const bool show = progress_enabled(o.output);
   RunControl ctl;
@@ -217,9 +223,10 @@ void run_compare(const CompareOptions& o) {
   }
   for (const ModelRun* r : {&c.depthavg, &c.twod}) {
     if (r->outcome == RunOutcome::Interrupted)
-      throw CommandFailed("interrupted; what was computed is in " + h5, 130);
+      throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
     if (r->outcome == RunOutcome::Diverged)
-      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5, 3);
+      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5,
+                          kExitRunFailed);
   }
 }
 

@@ -6,7 +6,6 @@
 //
 // Model-independent options live in RunOptions (run_model.hpp); each model adds its own options
 // and has its own run_<model>.cpp. The model is chosen once, here.
-#include <csignal>
 #include <memory>
 
 #include "cli_common.hpp"
@@ -15,32 +14,6 @@
 #include "run_twod.hpp"
 
 namespace granbench::cli {
-
-namespace {
-
-std::atomic<bool>& interrupt_flag() {
-  static std::atomic<bool> flag{false};  // a signal handler can only reach static storage
-  return flag;
-}
-extern "C" void on_sigint(int) { interrupt_flag().store(true); }
-using Handler = void (*)(int);
-Handler& previous_handler(int signal) {
-  static Handler on_int = SIG_DFL, on_term = SIG_DFL;
-  return signal == SIGTERM ? on_term : on_int;
-}
-
-}  // namespace
-
-InterruptGuard::InterruptGuard(Signals signals) : term_(signals == Signals::IntAndTerm) {
-  interrupt_flag().store(false);
-  previous_handler(SIGINT) = std::signal(SIGINT, on_sigint);
-  if (term_) previous_handler(SIGTERM) = std::signal(SIGTERM, on_sigint);
-}
-InterruptGuard::~InterruptGuard() {
-  if (term_) std::signal(SIGTERM, previous_handler(SIGTERM));
-  std::signal(SIGINT, previous_handler(SIGINT));
-}
-const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
 
 std::vector<std::string> model_names() { return {"depthavg", "twod"}; }
 

@@ -38,6 +38,8 @@ const char* run_status_name(RunStatus s) {
   return "failed";
 }
 
+double divergence_speed_limit(double u_surface) { return std::max(50.0, 10.0 * u_surface); }
+
 RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
               const RunHooks& hooks) {
   if (!(schedule.t_end > 0.0) || !(schedule.dt_out > 0.0) || !(schedule.dt_snapshot >= 0.0) ||

@@ -75,6 +75,12 @@ struct RunResult {
   bool completed() const { return status == RunStatus::Completed; }
 };
 
+// The speed above which a run of a base flow with surface speed u_surface is reported as
+// diverging (SolverParams::velocity_limit): ten times the surface speed, never below the former
+// fixed 50 m/s. A fixed limit called valid steep flows (60 degrees: 47.7 m/s at the surface)
+// diverged at their first step, while slow flows keep the limit they had.
+double divergence_speed_limit(double u_surface);
+
 // Runs `solver` from its current time to schedule.t_end. `series` holds the samples so far (a
 // restart's); when it is empty the current state is sampled first.
 RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,

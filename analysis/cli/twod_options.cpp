@@ -4,6 +4,7 @@
 #include <string>
 
 #include "initial_state.hpp"
+#include "run.hpp"
 #include "run_twod.hpp"
 #include "steady_state.hpp"
 
@@ -72,7 +73,7 @@ twod::SolverParams twod_solver_params(const RunOptions& o, const TwodOptions& mo
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
   const MuCurve curve = o.flow.make_curve();
   const double zeta = degrees_to_radians(o.flow.angle_deg);
-  (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
+  const SteadyState base = o.flow.steady();  // no steady flow: an error on --angle
   Lz = mo.Lz > 0.0 ? mo.Lz : twod::mid_cell_domain_height(o.flow.h0, mo.nz);
   if (!(Lz > o.flow.h0 + o.a0))
     throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
@@ -94,6 +95,7 @@ twod::SolverParams twod_solver_params(const RunOptions& o, const TwodOptions& mo
   params.viscosity_passes = mo.viscosity_passes;
   params.dt_max = mo.dt_max;
   params.solver_tolerance = mo.tolerance;
+  params.velocity_limit = divergence_speed_limit(base.u_surface);
   return params;
 }
 

@@ -2,6 +2,7 @@
 #include "output_checks.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 #include "cli_common.hpp"
@@ -22,6 +23,16 @@ void require_record_count(const std::string& option, double t_end, double dt, lo
   s << option << ": " << dt << " s gives " << n << " " << records << " up to --t-end " << t_end
     << " s, more than the cap of " << cap << "; valid range [" << t_end / double(cap) << ", inf)";
   throw UsageError(s.str());
+}
+
+void plot_run(const std::string& script, const std::string& h5, const std::string& png,
+              const std::string& extra_args, bool run_completed) {
+  try {
+    run_plot_script(script, h5, png, extra_args);
+  } catch (const std::runtime_error& e) {
+    if (run_completed) throw;
+    std::cerr << "granbench: no figure: " << e.what() << "\n";
+  }
 }
 
 }  // namespace granbench::cli

@@ -1,6 +1,6 @@
 // The checks of the failure policy (failure_policy.hpp) that run before any work, as UsageError
 // (exit 2): output and checkpoint paths that cannot be written (with the OS's reason), and
-// sampling intervals that would fill memory or disk.
+// sampling intervals that would fill memory or disk; and the figure of a run that stopped early.
 #pragma once
 
 #include <string>
@@ -18,5 +18,11 @@ void require_writable(const std::string& path, const std::string& option);
 // UsageError naming `option` and its valid range when t_end / dt exceeds `cap` records.
 void require_record_count(const std::string& option, double t_end, double dt, long cap,
                           const std::string& records);
+
+// run_plot_script for a run's figure. When the run did not complete, a plotting failure (no
+// python3-matplotlib) is reported on stderr instead of thrown, so that the run's own exit code
+// (interrupted, diverged, failed) is the one the caller sees.
+void plot_run(const std::string& script, const std::string& h5, const std::string& png,
+              const std::string& extra_args, bool run_completed);
 
 }  // namespace granbench::cli

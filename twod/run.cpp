@@ -78,8 +78,12 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
   double t_good = solver.state().t;  // the last sample taken, for a failure's message
 
   try {
-    if (hooks.snapshot) snapshot();
-    if (r.series.nt() == 0) take_sample();
+    // The start is a snapshot and a sample of a new run only: a restart's start was the
+    // interrupted run's checkpoint time, already in its records when it was on their grids.
+    if (r.series.nt() == 0) {
+      if (hooks.snapshot) snapshot();
+      take_sample();
+    }
     for (; k <= n_samples; ++k) {
       if (hooks.stop && hooks.stop->load()) {
         r.status = RunStatus::Interrupted;

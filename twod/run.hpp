@@ -5,10 +5,12 @@
 // counted from t = 0, whatever time the solver starts at: a run restarted from a checkpoint at
 // time t_c continues with the first k dt_out after t_c, so its series is the uninterrupted run's
 // (the measurement needs that uniform grid, analysis/surface_measurement.hpp). Snapshots, when
-// asked for, are taken at the start and at j dt_snapshot on the same kind of grid. The solver
-// is advanced with Solver::advance_to to each next event time, so the step sequence depends only
-// on the event times: a run with the same events repeats another to the bit (the solver halves
-// the last two steps before an event instead of taking a sliver, so every event time counts).
+// asked for, are taken at the start and at j dt_snapshot on the same kind of grid. The start
+// counts only for a new run (an empty series): a restart adds neither sample nor snapshot there.
+// The solver is advanced with Solver::advance_to to each next event time, so the step sequence
+// depends only on the event times: a run with the same events repeats another to the bit (the
+// solver halves the last two steps before an event instead of taking a sliver, so every event
+// time counts).
 //
 // When the run completes and t_end is not on the snapshot grid, a last snapshot is taken at
 // t_end, so that the output always ends with the final state.

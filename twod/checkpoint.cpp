@@ -58,15 +58,8 @@ std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverPar
       s << name << ": the checkpoint has " << a << ", this run " << b;
     return s.str();
   };
-  const std::pair<std::string, std::pair<double, double>> grid[] = {
-      {"nx", {c.grid.nx, g.nx}},
-      {"nz", {c.grid.nz, g.nz}},
-      {"Lx", {c.grid.Lx, g.Lx}},
-      {"Lz", {c.grid.Lz, g.Lz}}};
-  for (const auto& [name, v] : grid)
-    if (differs(v.first, v.second)) return text(name, v.first, v.second);
   if (c.physics.empty())
-    return "physics: the checkpoint does not record them (written by an older granbench)";
+    return "restart: the checkpoint does not record its physics (written by an older granbench)";
   for (const auto& [name, run_value] : checkpoint_physics(params)) {
     bool found = false;
     for (const auto& [stored, value] : c.physics)
@@ -76,6 +69,15 @@ std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverPar
       }
     if (!found) return name + ": not recorded in the checkpoint";
   }
+  // After the physics: a depth that differs also changes the default Lz, and --h0 is the
+  // better name for that.
+  const std::pair<std::string, std::pair<double, double>> grid[] = {
+      {"nx", {c.grid.nx, g.nx}},
+      {"nz", {c.grid.nz, g.nz}},
+      {"Lx", {c.grid.Lx, g.Lx}},
+      {"Lz", {c.grid.Lz, g.Lz}}};
+  for (const auto& [name, v] : grid)
+    if (differs(v.first, v.second)) return text(name, v.first, v.second);
   return {};
 }
 

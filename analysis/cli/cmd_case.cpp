@@ -19,6 +19,7 @@
 
 #include "case_file.hpp"
 #include "cli_common.hpp"
+#include "failure_policy.hpp"
 #include "commands.hpp"
 #include "layer_case.hpp"
 #include "output_checks.hpp"
@@ -236,6 +237,7 @@ void add_case_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--json", o->output.json, "print the results as JSON");
   sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");
+  sub->footer(exit_codes_help());
   sub->callback([o] { run_case(*o); });
 }
 

@@ -245,6 +245,7 @@ void add_compare_command(CLI::App& app) {
       "compare", "run both models on one chute flow and compare them with exact linear theory");
   add_flow_options(*sub, o->flow);
   add_output_options(*sub, o->output);
+  sub->footer(exit_codes_help());
   sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")->check(positive())->capture_default_str();
   sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")->check(positive())->capture_default_str();
   sub->add_flag("--paper", o->paper, "the paper's start: sine (7.2) with a0 = 0.2 mm");

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "failure_policy.hpp"
 #include "commands.hpp"
 #include "run_model.hpp"
 #include "run_twod.hpp"
@@ -47,8 +48,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--seed", o.seed, "seed of the noise")->capture_default_str();
   app.add_option("--t-end", o.t_end, "end time [s], > 0")->check(positive())->capture_default_str();
   app.add_option("--dt-out", o.dt_out,
-                 "sampling interval of h(x,t) [s], > 0; default: automatic (the fastest wave "
-                 "moves at most Lx/(8 mode) per sample, and at most 0.01 s)")
+                 "sampling interval of h(x,t) [s], >= t_end/100000 (at most 1e5 samples); "
+                 "default: automatic (the fastest wave moves at most Lx/(8 mode) per sample, and "
+                 "at most 0.01 s, unless that gives more than 1e5 samples)")
       ->check(positive());
   app.add_option("--rtol", o.rtol, "CVODE relative tolerance, in (0, 1)")
       ->check(open_range(0.0, 1.0))
@@ -75,6 +77,7 @@ void add_run_command(CLI::App& app) {
   add_run_options(*sub, *run);
   add_depthavg_options(*sub, *depthavg);
   add_twod_options(*sub, *twod);
+  sub->footer(exit_codes_help());
   sub->callback([run, depthavg, twod] {
     check_run_options(*run);
     switch (parse_model(run->model)) {

@@ -53,7 +53,10 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   // Automatic sampling: the fastest characteristic moves at most a wavelength/8 per sample.
   const double g_cos = base.material.g * std::cos(base.zeta), u0 = base.u_mean;
   const double c_max = chi * u0 + std::sqrt(chi * (chi - 1.0) * u0 * u0 + g_cos * base.h0);
-  out.dt_out = o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * c_max));
+  // Automatic: no more than kMaxSamples, however long the run (an explicit --dt-out is refused).
+  out.dt_out = o.dt_out > 0.0 ? o.dt_out
+                              : std::max(std::min(0.01, wavelength / (8.0 * c_max)),
+                                         o.t_end / double(kMaxSamples));
 
   require_record_count("--dt-out", o.t_end, out.dt_out, kMaxSamples, "samples");
   if (!o.output.out.empty()) require_writable(o.output.out, "--out");

@@ -64,8 +64,10 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   // a restart with the same options continues the first run's grids.
   RunSchedule schedule;
   schedule.t_end = o.t_end;
-  schedule.dt_out =
-      o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface));
+  // Automatic: no more than kMaxSamples, however long the run (an explicit --dt-out is refused).
+  schedule.dt_out = o.dt_out > 0.0 ? o.dt_out
+                                   : std::max(std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface)),
+                                              o.t_end / double(kMaxSamples));
   schedule.dt_snapshot = mo.dt_snapshot > 0.0 ? mo.dt_snapshot : o.t_end / 10.0;
   schedule.dt_checkpoint = mo.checkpoint_every;
   require_record_count("--dt-out", o.t_end, schedule.dt_out, kMaxSamples, "samples");

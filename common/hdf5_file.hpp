@@ -29,6 +29,9 @@ class H5Writer {
   void attribute(const std::string& object, const std::string& key, const std::string& value);
   // Flush, close and rename into place.
   void close();
+  // Copy `object` (a group with everything under it, or a dataset, with their attributes) from
+  // the HDF5 file `source` to the same path here (hdf5_copy.cpp).
+  void copy_from(const std::string& source, const std::string& object);
   const std::string& path() const { return path_; }
 
  private:
@@ -45,5 +48,7 @@ std::vector<double> h5_read_doubles(const std::string& path, const std::string& 
                                     std::vector<std::size_t>* dims = nullptr);
 bool h5_has(const std::string& path, const std::string& name);
 SurfaceSeries read_surface_series(const std::string& path, const std::string& group);
+// A numeric attribute of an object; throws std::runtime_error when absent (hdf5_copy.cpp).
+double h5_read_attribute(const std::string& path, const std::string& object, const std::string& key);
 
 }  // namespace granbench

@@ -96,31 +96,38 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
 
   const auto n_samples =
       static_cast<std::size_t>(std::ceil(out.t_end / out.dt_out - 1e-9));
-  for (std::size_t n = 1; n <= n_samples; ++n) {
-    const double t_out = std::min(static_cast<double>(n) * out.dt_out, out.t_end);
-    const AdvanceResult adv = integ.advance_to(t_out);
-    if (!adv.ok) {
-      std::ostringstream s;
-      s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message
-        << "); " << (adv.nonfinite ? "non-finite " : "largest local error in ")
-        << quantity_name(adv.worst) << " at x = " << rhs_.x(adv.worst / 2) << " m";
-      res.status = RunStatus::Diverged;
-      res.message = s.str();
-      break;
+  try {
+    for (std::size_t n = 1; n <= n_samples; ++n) {
+      const double t_out = std::min(static_cast<double>(n) * out.dt_out, out.t_end);
+      const AdvanceResult adv = integ.advance_to(t_out);
+      if (!adv.ok) {
+        std::ostringstream s;
+        s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message
+          << "); " << (adv.nonfinite ? "non-finite " : "largest local error in ")
+          << quantity_name(adv.worst) << " at x = " << rhs_.x(adv.worst / 2) << " m";
+        res.status = RunStatus::Diverged;
+        res.message = s.str();
+        break;
+      }
+      const std::string bad = check_state(rhs_, integ.state(), adv.t);
+      if (!bad.empty()) {
+        res.status = RunStatus::Diverged;
+        res.message = bad;
+        break;
+      }
+      sample(adv.t, integ.state());
+      if (cb.progress) cb.progress(adv.t, out.t_end);
+      if (cb.stop && cb.stop->load() && n < n_samples) {
+        res.status = RunStatus::Interrupted;
+        res.message = "interrupted at t = " + std::to_string(adv.t) + " s";
+        break;
+      }
     }
-    const std::string bad = check_state(rhs_, integ.state(), adv.t);
-    if (!bad.empty()) {
-      res.status = RunStatus::Diverged;
-      res.message = bad;
-      break;
-    }
-    sample(adv.t, integ.state());
-    if (cb.progress) cb.progress(adv.t, out.t_end);
-    if (cb.stop && cb.stop->load() && n < n_samples) {
-      res.status = RunStatus::Interrupted;
-      res.message = "interrupted at t = " + std::to_string(adv.t) + " s";
-      break;
-    }
+  } catch (const std::exception& e) {
+    // Whatever fails inside the loop, the samples so far are the caller's to keep.
+    res.status = RunStatus::Failed;
+    res.message = "failed at t = " + std::to_string(integ.time()) + " s (after the sample at t = " +
+                  std::to_string(res.series.t.back()) + " s): " + e.what();
   }
 
   const auto U = integ.state();

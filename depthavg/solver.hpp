@@ -19,7 +19,9 @@
 
 namespace granbench::depthavg {
 
-enum class RunStatus { Completed, Interrupted, Diverged };
+// Failed: an exception other than divergence left the time loop (a hook, memory); the samples
+// taken up to then are kept and the message says when and why.
+enum class RunStatus { Completed, Interrupted, Diverged, Failed };
 
 struct RunResult {
   SurfaceSeries series;

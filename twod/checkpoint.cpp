@@ -1,16 +1,88 @@
 // Checkpoint file layout (HDF5): /state/{u,w,p,f} as stored on the staggered grid, and the
 // scalars /state/{t, steps, dt_last, initial_volume, nx, nz, Lx, Lz} as one-element datasets;
 // /surface is the SurfaceSeries recorded so far; /warm_start holds the linear solvers' initial
-// guesses and the second-order step's memory (A^n, the last step: Solver::warm_start).
-// A restart continues bit-for-bit from here.
+// guesses and the second-order step's memory (A^n, the last step: Solver::warm_start);
+// /run/snapshot_times the times of the snapshots written so far; /physics/<name> one scalar per
+// physical input (checkpoint_physics). A restart continues bit-for-bit from here.
 #include "checkpoint.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
 
 #include "diagnostics.hpp"
 #include "hdf5_file.hpp"
 
 namespace granbench::twod {
 
-void write_checkpoint(const std::string& path, const Solver& solver, const SurfaceSeries& series) {
+std::vector<std::pair<std::string, double>> checkpoint_physics(const SolverParams& p) {
+  const Rheology& r = p.rheology;
+  const Material& m = r.material;
+  return {{"angle", p.zeta * 180.0 / std::numbers::pi},
+          {"curve", double(static_cast<int>(r.curve))},
+          {"h0", r.h0_for_curve},
+          {"mu-s", m.mu_s},
+          {"mu-d", m.mu_d},
+          {"I0", m.I0},
+          {"d", m.d},
+          {"phi", m.phi},
+          {"rho-star", m.rho_star},
+          {"g", m.g},
+          {"mu-inf", m.mu_inf},
+          {"alpha", m.alpha},
+          {"kk-mu0", m.kk_mu0},
+          {"kk-cK", m.kk_cK},
+          {"hm-c", m.hm_c},
+          {"eta-max", r.eta_max},
+          {"eta-min", r.eta_min},
+          {"D-min", r.D_min},
+          {"rho-light", r.rho_light},
+          {"eta-light", r.eta_light},
+          {"mixing", double(static_cast<int>(r.mixing))}};
+}
+
+void resume_from(Solver& solver, const Checkpoint& c) {
+  solver.resume(c.steps, c.dt_last, c.initial_volume);
+  solver.set_warm_start(c.warm_start);
+}
+
+std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverParams& params) {
+  auto differs = [](double a, double b) { return std::abs(a - b) > 1e-12 * std::abs(b); };
+  auto text = [](const std::string& name, double a, double b) {
+    std::ostringstream s;
+    s.precision(12);
+    if (name == "curve")
+      s << name << ": the checkpoint has " << curve_name(CurveKind(int(a))) << ", this run "
+        << curve_name(CurveKind(int(b)));
+    else
+      s << name << ": the checkpoint has " << a << ", this run " << b;
+    return s.str();
+  };
+  if (c.physics.empty())
+    return "restart: the checkpoint does not record its physics (written by an older granbench)";
+  for (const auto& [name, run_value] : checkpoint_physics(params)) {
+    bool found = false;
+    for (const auto& [stored, value] : c.physics)
+      if (stored == name) {
+        found = true;
+        if (differs(value, run_value)) return text(name, value, run_value);
+      }
+    if (!found) return name + ": not recorded in the checkpoint";
+  }
+  // After the physics: a depth that differs also changes the default Lz, and --h0 is the
+  // better name for that.
+  const std::pair<std::string, std::pair<double, double>> grid[] = {
+      {"nx", {c.grid.nx, g.nx}},
+      {"nz", {c.grid.nz, g.nz}},
+      {"Lx", {c.grid.Lx, g.Lx}},
+      {"Lz", {c.grid.Lz, g.Lz}}};
+  for (const auto& [name, v] : grid)
+    if (differs(v.first, v.second)) return text(name, v.first, v.second);
+  return {};
+}
+
+void write_checkpoint(const std::string& path, const Solver& solver, const SurfaceSeries& series,
+                      const std::vector<double>& snapshot_times) {
   const Grid& g = solver.grid();
   const Fields& s = solver.state();
   const RunStatistics st = solver.statistics();
@@ -43,6 +115,9 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
     out.write("/warm_start/advection_w", w.advection_w);
   }
   out.write("/warm_start/previous_dt", std::span<const double>(&w.previous_dt, 1));
+  if (!snapshot_times.empty()) out.write("/run/snapshot_times", snapshot_times);
+  for (const auto& [name, v] : checkpoint_physics(solver.params()))
+    out.write("/physics/" + name, std::span<const double>(&v, 1));
   out.close();
 }
 
@@ -80,6 +155,11 @@ Checkpoint read_checkpoint(const std::string& path) {
   std::vector<double> dt;
   optional("previous_dt", dt);
   if (!dt.empty()) c.warm_start.previous_dt = dt.at(0);
+  if (h5_has(path, "/run/snapshot_times"))
+    c.snapshot_times = h5_read_doubles(path, "/run/snapshot_times");
+  for (const auto& [name, v] : checkpoint_physics(SolverParams{}))
+    if (h5_has(path, "/physics/" + name))
+      c.physics.emplace_back(name, h5_read_doubles(path, "/physics/" + name).at(0));
   return c;
 }
 

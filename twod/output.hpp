@@ -24,6 +24,10 @@ class SnapshotWriter {
   void write(const Solver& solver);
   // Write the XDMF index (atomically: .partial, then rename).
   void finish() const;
+  // Take over the first times.size() snapshots of an earlier output of the same run (a restart
+  // into the same file, snapshot_carry_over.cpp): copied as they are, numbered as before, and
+  // indexed in the XDMF. Throws std::runtime_error when `earlier` does not hold them.
+  void carry_over(const std::string& earlier, const std::vector<double>& times);
   std::size_t count() const { return times_.size(); }
 
  private:

@@ -38,10 +38,14 @@ const char* run_status_name(RunStatus s) {
   return "failed";
 }
 
+double divergence_speed_limit(double u_surface) { return std::max(50.0, 10.0 * u_surface); }
+
 RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
               const RunHooks& hooks) {
-  if (!(schedule.t_end > 0.0) || !(schedule.dt_out > 0.0) || !(schedule.dt_snapshot >= 0.0))
-    throw std::invalid_argument("twod::run: t_end and dt_out must be positive, dt_snapshot >= 0");
+  if (!(schedule.t_end > 0.0) || !(schedule.dt_out > 0.0) || !(schedule.dt_snapshot >= 0.0) ||
+      !(schedule.dt_checkpoint >= 0.0))
+    throw std::invalid_argument(
+        "twod::run: t_end and dt_out must be positive, dt_snapshot and dt_checkpoint >= 0");
   const auto wall_start = std::chrono::steady_clock::now();
   const Grid& g = solver.grid();
   const MuCurve& curve = solver.viscosity_model().curve();
@@ -64,10 +68,22 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
   const long n_snaps = snapshots ? static_cast<long>(std::floor(t_end / dt_snap + 1e-9)) : 0;
   long k = first_after(solver.state().t, dt_out);
   long j = snapshots ? first_after(solver.state().t, dt_snap) : 1;
+  const double dt_ckpt = hooks.checkpoint ? schedule.dt_checkpoint : 0.0;
+  long c = dt_ckpt > 0.0 ? first_after(solver.state().t, dt_ckpt) : 0;
+  double last_snapshot = -1.0;
+  const auto snapshot = [&] {
+    hooks.snapshot(solver);
+    last_snapshot = solver.state().t;
+  };
+  double t_good = solver.state().t;  // the last sample taken, for a failure's message
 
   try {
-    if (hooks.snapshot) hooks.snapshot(solver);
-    if (r.series.nt() == 0) take_sample();
+    // The start is a snapshot and a sample of a new run only: a restart's start was the
+    // interrupted run's checkpoint time, already in its records when it was on their grids.
+    if (r.series.nt() == 0) {
+      if (hooks.snapshot) snapshot();
+      take_sample();
+    }
     for (; k <= n_samples; ++k) {
       if (hooks.stop && hooks.stop->load()) {
         r.status = RunStatus::Interrupted;
@@ -78,29 +94,48 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
       // snapshots before this sample; one at the sample's time follows the sample
       for (; j <= n_snaps && !reached(static_cast<double>(j) * dt_snap, t_sample); ++j) {
         solver.advance_to(static_cast<double>(j) * dt_snap);
-        hooks.snapshot(solver);
+        snapshot();
       }
       solver.advance_to(t_sample);
       take_sample();
+      t_good = solver.state().t;
       const RheologyStats rs = rheology_stats(g, solver.state().f, solver.properties().I_c, curve);
       if (std::isfinite(rs.I_min)) I_lo = std::min(I_lo, rs.I_min), I_hi = std::max(I_hi, rs.I_max);
       r.illposed_fraction_max = std::max(r.illposed_fraction_max, rs.illposed_fraction);
       r.last = rs;
       if (j <= n_snaps && reached(solver.state().t, static_cast<double>(j) * dt_snap)) {
-        hooks.snapshot(solver);
+        snapshot();
         ++j;
       }
+      // After the snapshot at this time, so that a restart from here (which takes the next
+      // snapshot after its start) misses none; none at t_end, where the run is complete.
+      if (c > 0 && k < n_samples && reached(solver.state().t, static_cast<double>(c) * dt_ckpt)) {
+        hooks.checkpoint(solver, r.series);
+        c = first_after(solver.state().t, dt_ckpt);
+      }
     }
+    // The output always ends with the final state, also when t_end is off the snapshot grid.
+    if (hooks.snapshot && r.status == RunStatus::Completed && !reached(last_snapshot, t_end))
+      snapshot();
   } catch (const DivergenceError& e) {
     r.status = RunStatus::Diverged;
     r.message = e.what();
     r.divergence = e;
   } catch (const std::exception& e) {
-    // a failed linear solve, a full disk: keep what was computed
+    // a failed linear solve, a full disk: keep what was computed, say when and where
     r.status = RunStatus::Failed;
-    r.message = e.what();
+    r.message = "failed at t = " + std::to_string(solver.state().t) + " s (step " +
+                std::to_string(solver.statistics().steps + 1) + ", after the sample at t = " +
+                std::to_string(t_good) + " s): " + e.what();
   }
-  if (r.status == RunStatus::Interrupted && hooks.checkpoint) hooks.checkpoint(solver, r.series);
+  if (r.status == RunStatus::Interrupted && hooks.checkpoint) {
+    try {
+      hooks.checkpoint(solver, r.series);
+    } catch (const std::exception& e) {
+      // The samples are still in memory: the caller writes them whatever happened here.
+      r.message += "; no checkpoint: " + std::string(e.what());
+    }
+  }
 
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   r.I_min = std::isfinite(I_lo) ? I_lo : nan;

@@ -19,8 +19,10 @@
 
 #include "case_file.hpp"
 #include "cli_common.hpp"
+#include "failure_policy.hpp"
 #include "commands.hpp"
 #include "layer_case.hpp"
+#include "output_checks.hpp"
 #include "run_model.hpp"
 #include "run_twod.hpp"
 
@@ -45,21 +47,23 @@ std::string path_in(const CaseOptions& o, const std::string& file) {
 // The uniform-layer cases: decelerating (§5.2) and high-speed (§6.2).
 nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
   const cases::LayerCaseSpec spec = cases::layer_case_spec(file, o.resolution);
+  const std::string h5 = path_in(o, spec.name + ".h5");
+  require_writable(h5, "--out-dir");
   const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   const cases::LayerCaseResult result =
       cases::run_layer_case(spec, o.jobs, guard.flag(), progress_enabled(o.output));
-  const std::string h5 = path_in(o, spec.name + ".h5");
   cases::write_layer_case(h5, spec, result);
+  for (const auto& r : result.runs)
+    if (r.status == "interrupted") exit_code = guard.exit_code();
   const std::string png_prefix = path_in(o, spec.name);
   // snapshot_time: the time of the I snapshots (the decelerating layer is at rest by the end).
-  run_plot_script("case_layer.py", h5, png_prefix,
-                  file.has("snapshot_time", o.resolution)
-                      ? std::to_string(file.number("snapshot_time", o.resolution)) : "");
+  plot_run("case_layer.py", h5, png_prefix,
+           file.has("snapshot_time", o.resolution)
+               ? std::to_string(file.number("snapshot_time", o.resolution)) : "",
+           exit_code == 0);
   nlohmann::json j = result.summary;
   j["outputs"] = {h5, png_prefix + "_profiles.png", png_prefix + "_snapshots.png"};
   if (!result.grid_dependence.empty()) j["outputs"].push_back(png_prefix + "_grid_dependence.png");
-  for (const auto& r : result.runs)
-    if (r.status == "interrupted") exit_code = 130;
   return j;
 }
 
@@ -94,17 +98,18 @@ nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions&
   run.output.out = h5;
   run.output.quiet = o.output.quiet;
   TwodRunReport report;
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   try {
     check_run_options(run);
-    const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
     report = run_twod_model(run, twod, guard.flag());
   } catch (const UsageError& e) {
     throw UsageError("case file " + file.path() + ", table [run]: " + e.what());
   }
-  exit_code = report.status == twod::RunStatus::Completed     ? 0
-              : report.status == twod::RunStatus::Interrupted ? 130
-              : report.status == twod::RunStatus::Diverged    ? 3
-                                                              : 1;
+  try {
+    throw_unless_completed(report, guard);
+  } catch (const CommandFailed& e) {
+    exit_code = e.exit_code;  // after the figures of what was computed
+  }
   if (exit_code != 0) std::cerr << "granbench: " << report.message << "\n";
   nlohmann::json j = {{"case", file.name()}, {"resolution", o.resolution}, {"run", report.json}};
   const std::string png_prefix = path_in(o, file.name());
@@ -112,9 +117,10 @@ nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions&
   const std::vector<double> window = file.numbers("probe_window", o.resolution);
   const double field_time = file.number("field_time", o.resolution);
   if (window.size() != 2) throw cases::CaseFileError(file.path() + ": key 'probe_window' must be [t0, t1]");
-  run_plot_script("case_rollwave.py", h5, png_prefix,
-                  std::to_string(probe_x) + " " + std::to_string(window[0]) + " " +
-                      std::to_string(window[1]) + " " + std::to_string(field_time));
+  plot_run("case_rollwave.py", h5, png_prefix,
+           std::to_string(probe_x) + " " + std::to_string(window[0]) + " " +
+               std::to_string(window[1]) + " " + std::to_string(field_time),
+           exit_code == 0);
   j["outputs"] = {h5, png_prefix + "_fields.png", png_prefix + "_streamlines.png", png_prefix + "_surface.png"};
   return j;
 }
@@ -209,7 +215,8 @@ void run_case(const CaseOptions& o) {
   j["kind"] = kind;
   if (o.output.json) print_json(j);
   else print_summary(kind, j);
-  if (exit_code == 130) throw CommandFailed("interrupted; the samples computed so far were kept", 130);
+  if (exit_code == kExitSigint || exit_code == kExitSigterm)
+    throw CommandFailed("interrupted; the samples computed so far were kept", exit_code);
   if (exit_code != 0) throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")", exit_code);
 }
 
@@ -231,6 +238,7 @@ void add_case_command(CLI::App& app) {
   sub->add_flag("--json", o->output.json, "print the results as JSON");
   sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");
   add_threads_option(*sub);
+  sub->footer(exit_codes_help());
   sub->callback([o] { run_case(*o); });
 }
 

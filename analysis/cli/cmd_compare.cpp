@@ -16,6 +16,7 @@
 #include "compare.hpp"
 #include "compare_output.hpp"
 #include "measurement_json.hpp"
+#include "output_checks.hpp"
 #include "run_model.hpp"
 
 namespace granbench::cli {
@@ -42,6 +43,10 @@ nlohmann::json opt(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
+// measure() fits the whole run only when there are three samples or more; a zero-initialised fit
+// is no measurement and is shown as n/a, never as a growth rate of 0.
+bool whole_run_fitted(const Measurement& m) { return m.whole_run.last > m.whole_run.first; }
+
 nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
   nlohmann::json j{
       {"growth_rate", number_or_null(m.spectral.growth_rate)},
@@ -53,8 +58,8 @@ nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
       {"fit_r2", number_or_null(m.spectral.log_amplitude_r2)},
       {"fit_window_found", m.spectral.found()},
       {"reason", m.spectral.found() ? nlohmann::json(nullptr) : nlohmann::json(m.spectral.reason)},
-      {"growth_rate_whole_run", m.whole_run.slope},
-      {"whole_run_r2", m.whole_run.r2},
+      {"growth_rate_whole_run", whole_run_fitted(m) ? nlohmann::json(m.whole_run.slope) : nullptr},
+      {"whole_run_r2", whole_run_fitted(m) ? nlohmann::json(m.whole_run.r2) : nullptr},
       {"wave_speed", opt(m.wave_speed)},
       {"amplitude", opt(m.amplitude)},
       {"final_amplitude", m.final_amplitude},
@@ -72,16 +77,15 @@ nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
 }
 
 // One measured row: growth and phase speed with their deviation from the reference theory, or
-// "—" and the reason when there was no clean window; then any other wave carrying more than 10 %
+// "n/a" and the reason when there was no clean window; then any other wave carrying more than 10 %
 // of the seeded wave's amplitude at the window start, on its own line.
 void print_measured(const char* label, const SurfaceMeasurement& m, const TheoryValue& ref,
                     const char* ref_name) {
   auto rel = [](double a, double b) { return 100.0 * (a - b) / std::fabs(b); };
   std::cout << std::setprecision(4) << "  " << std::left << std::setw(25) << label << std::right;
   if (!m.found()) {
-    // setw counts bytes: "—" is three, shown as one column.
-    std::cout << std::setw(14) << "—" << std::setw(22) << "—"
-              << "   (" << m.reason << ")\n";
+    std::cout << std::setw(12) << "n/a" << std::setw(20) << "n/a"
+              << "   (not measured: " << m.reason << ")\n";
     return;
   }
   std::cout << std::setw(12) << m.growth_rate << std::setw(20) << m.phase_speed << "   vs "
@@ -124,8 +128,11 @@ void print_table(const Comparison& c) {
                 << std::setprecision(3);
     else
       std::cout << " growth not measured";
-    std::cout << "; whole-run fit of ln|h_k| " << m->whole_run.slope
-              << " 1/s (R^2 = " << m->whole_run.r2 << ")\n";
+    if (whole_run_fitted(*m))
+      std::cout << "; whole-run fit of ln|h_k| " << m->whole_run.slope
+                << " 1/s (R^2 = " << m->whole_run.r2 << ")\n";
+    else
+      std::cout << "; whole-run fit of ln|h_k| n/a (fewer than 3 samples)\n";
     if (!w.note.empty()) std::cout << "  " << name << ": " << w.note << "\n";
     if (m->saturated)
       std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << *m->wave_speed
@@ -164,7 +171,12 @@ void run_compare(const CompareOptions& o) {
 
   const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
   const std::string png = o.output.plot.empty() ? "compare.png" : o.output.plot;
-  InterruptGuard guard;
+  // Before any work (failure_policy.hpp): a path that cannot be written, or a sampling interval
+  // that would fill memory, is a usage error, not a lost computation.
+  require_writable(h5, "--out");
+  require_writable(png, "--plot");
+  if (o.dt_out > 0.0) require_record_count("--dt-out", o.t_end, o.dt_out, kMaxSamples, "samples");
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   std::mutex io;
   const bool show = progress_enabled(o.output);
   RunControl ctl;
@@ -192,7 +204,8 @@ void run_compare(const CompareOptions& o) {
   c.twod_measured = measure(c.twod.series, twod_opt);
 
   write_comparison(h5, c, twod, depthavg);
-  run_plot_script("compare.py", h5, png);
+  plot_run("compare.py", h5, png, "",
+           c.depthavg.outcome == RunOutcome::Completed && c.twod.outcome == RunOutcome::Completed);
 
   if (o.output.json) {
     print_json({{"Lx", chute.Lx},
@@ -215,9 +228,10 @@ void run_compare(const CompareOptions& o) {
   }
   for (const ModelRun* r : {&c.depthavg, &c.twod}) {
     if (r->outcome == RunOutcome::Interrupted)
-      throw CommandFailed("interrupted; what was computed is in " + h5, 130);
+      throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
     if (r->outcome == RunOutcome::Diverged)
-      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5, 3);
+      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5,
+                          kExitRunFailed);
   }
 }
 
@@ -230,6 +244,7 @@ void add_compare_command(CLI::App& app) {
   add_flow_options(*sub, o->flow);
   add_output_options(*sub, o->output);
   add_threads_option(*sub);
+  sub->footer(exit_codes_help());
   sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")->check(positive())->capture_default_str();
   sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")->check(positive())->capture_default_str();
   sub->add_flag("--paper", o->paper, "the paper's start: sine (7.2) with a0 = 0.2 mm");

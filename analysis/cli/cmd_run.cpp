@@ -6,41 +6,15 @@
 //
 // Model-independent options live in RunOptions (run_model.hpp); each model adds its own options
 // and has its own run_<model>.cpp. The model is chosen once, here.
-#include <csignal>
 #include <memory>
 
 #include "cli_common.hpp"
+#include "failure_policy.hpp"
 #include "commands.hpp"
 #include "run_model.hpp"
 #include "run_twod.hpp"
 
 namespace granbench::cli {
-
-namespace {
-
-std::atomic<bool>& interrupt_flag() {
-  static std::atomic<bool> flag{false};  // a signal handler can only reach static storage
-  return flag;
-}
-extern "C" void on_sigint(int) { interrupt_flag().store(true); }
-using Handler = void (*)(int);
-Handler& previous_handler(int signal) {
-  static Handler on_int = SIG_DFL, on_term = SIG_DFL;
-  return signal == SIGTERM ? on_term : on_int;
-}
-
-}  // namespace
-
-InterruptGuard::InterruptGuard(Signals signals) : term_(signals == Signals::IntAndTerm) {
-  interrupt_flag().store(false);
-  previous_handler(SIGINT) = std::signal(SIGINT, on_sigint);
-  if (term_) previous_handler(SIGTERM) = std::signal(SIGTERM, on_sigint);
-}
-InterruptGuard::~InterruptGuard() {
-  if (term_) std::signal(SIGTERM, previous_handler(SIGTERM));
-  std::signal(SIGINT, previous_handler(SIGINT));
-}
-const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
 
 std::vector<std::string> model_names() { return {"depthavg", "twod"}; }
 
@@ -74,8 +48,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--seed", o.seed, "seed of the noise")->capture_default_str();
   app.add_option("--t-end", o.t_end, "end time [s], > 0")->check(positive())->capture_default_str();
   app.add_option("--dt-out", o.dt_out,
-                 "sampling interval of h(x,t) [s], > 0; default: automatic (the fastest wave "
-                 "moves at most Lx/(8 mode) per sample, and at most 0.01 s)")
+                 "sampling interval of h(x,t) [s], >= t_end/100000 (at most 1e5 samples); "
+                 "default: automatic (the fastest wave moves at most Lx/(8 mode) per sample, and "
+                 "at most 0.01 s, unless that gives more than 1e5 samples)")
       ->check(positive());
   app.add_option("--rtol", o.rtol, "CVODE relative tolerance, in (0, 1)")
       ->check(open_range(0.0, 1.0))
@@ -103,6 +78,7 @@ void add_run_command(CLI::App& app) {
   add_run_options(*sub, *run);
   add_depthavg_options(*sub, *depthavg);
   add_twod_options(*sub, *twod);
+  sub->footer(exit_codes_help());
   sub->callback([run, depthavg, twod] {
     check_run_options(*run);
     switch (parse_model(run->model)) {

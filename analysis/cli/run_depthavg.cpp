@@ -3,106 +3,24 @@
 // rate and phase speed (and the other waves at its wavenumber) measured by the matrix pencil fit
 // of surface_measurement.hpp beside the exact relation (7.11) (chi-generalised),
 // the paper's estimator (7.12), and the speed of the developed wave by cross-correlation.
+// The options and paths are checked before any work; a stop (SIGINT, SIGTERM) or a failure keeps
+// what was computed (failure_policy.hpp).
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <optional>
 
 #include "commands.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
+#include "depthavg_report.hpp"
 #include "dispersion.hpp"
-#include "growth_estimator_712.hpp"
 #include "hdf5_file.hpp"
 #include "measurement_json.hpp"
+#include "output_checks.hpp"
 #include "run_model.hpp"
 #include "steady_state.hpp"
-#include "surface_measurement.hpp"
-#include "wave_speed.hpp"
 
 namespace granbench::cli {
-
-void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
-  const std::string g = "Depth-averaged model";
-  app.add_option("--chi", o.chi,
-                 "momentum shape factor chi in (7.4): 1 (the paper's), bagnold (5/4), or a "
-                 "number in [1, 2]")
-      ->group(g)
-      ->capture_default_str();
-  app.add_option("--limiter", o.limiter,
-                 "slope reconstruction {central,minmod,mc,vanalbada}: central is unlimited (linear runs), vanalbada a smooth limiter")
-      ->check(one_of({"central", "minmod", "mc", "vanalbada"}))
-      ->group(g)
-      ->capture_default_str();
-  app.add_option("--frame-speed", o.frame_speed,
-                 "solve in the frame moving at this speed [m/s], or 'linear' for the seeded "
-                 "mode's (7.11) phase speed, or 0 for the lab frame; output is in the lab frame")
-      ->group(g)
-      ->capture_default_str();
-}
-
-namespace {
-// The whole text as a number, NaN otherwise.
-double number_or_nan(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    return used == text.size() ? v : NAN;
-  } catch (const std::exception&) {
-    return NAN;
-  }
-}
-}  // namespace
-
-double parse_chi(const std::string& text) {
-  if (text == "bagnold") return 1.25;
-  const double v = number_or_nan(text);
-  if (!(v >= 1.0 && v <= 2.0))
-    throw UsageError("--chi: '" + text + "' is not allowed; valid values: bagnold or a number in [1, 2]");
-  return v;
-}
-
-namespace {
-
-double parse_frame_speed(const std::string& text, double linear_speed) {
-  if (text == "linear") return linear_speed;
-  const double v = number_or_nan(text);
-  if (!(std::fabs(v) <= 100.0))
-    throw UsageError("--frame-speed: '" + text + "' is not allowed; valid values: linear or a "
-                     "number in [-100, 100] m/s");
-  return v;
-}
-
-struct Measured {
-  SurfaceMeasurement growth;  // the seeded mode; a reason instead when there is no clean window
-  std::optional<Estimate712> e712;
-  std::optional<WaveSpeed> wave;
-};
-
-// The seeded mode is the component nearest the (7.11) phase speed; a saturated wave (e.g. (7.2)
-// at Lx = 8 cm, which saturates within 0.3 s) has no clean linear window and gives a reason.
-Measured measure(const SurfaceSeries& s, int mode, double expected_speed) {
-  Measured m;
-  MeasureOptions opt;
-  opt.mode = mode;
-  opt.seeded_phase_speed = expected_speed;
-  m.growth = measure_surface_series(s, opt);
-  if (m.growth.found()) {
-    try {
-      m.e712 = growth_estimate_712(s, m.growth.t_first, m.growth.t_last);
-    } catch (const std::invalid_argument&) {
-      // (7.12) needs max h > h0 throughout the window.
-    }
-  }
-  if (s.nt() < 8) return m;
-  try {
-    m.wave = wave_speed(s, 0.5 * s.t.back(), s.t.back());
-  } catch (const std::invalid_argument&) {
-  }
-  return m;
-}
-
-}  // namespace
 
 void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   const double chi = parse_chi(mo.chi);
@@ -135,12 +53,18 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   // Automatic sampling: the fastest characteristic moves at most a wavelength/8 per sample.
   const double g_cos = base.material.g * std::cos(base.zeta), u0 = base.u_mean;
   const double c_max = chi * u0 + std::sqrt(chi * (chi - 1.0) * u0 * u0 + g_cos * base.h0);
-  out.dt_out = o.dt_out > 0.0 ? o.dt_out : std::min(0.01, wavelength / (8.0 * c_max));
+  // Automatic: no more than kMaxSamples, however long the run (an explicit --dt-out is refused).
+  out.dt_out = o.dt_out > 0.0 ? o.dt_out
+                              : std::max(std::min(0.01, wavelength / (8.0 * c_max)),
+                                         o.t_end / double(kMaxSamples));
+
+  require_record_count("--dt-out", o.t_end, out.dt_out, kMaxSamples, "samples");
+  if (!o.output.out.empty()) require_writable(o.output.out, "--out");
 
   const depthavg::Solver solver(base, curve, space, integ);
   const auto U0 = depthavg::initial_state(solver.rhs(), init, exact.lambda_hat);
 
-  const InterruptGuard guard;
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   depthavg::RunCallbacks cb;
   cb.stop = guard.flag();
   const bool progress = progress_enabled(o.output);
@@ -152,13 +76,14 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   const depthavg::RunResult r = solver.run(U0, out, cb);
   if (progress) std::cerr << "\n";
 
-  const Measured m = measure(r.series, o.mode, exact.phase_speed);
+  const DepthAvgMeasured m = measure_depthavg(r.series, o.mode, exact.phase_speed);
   const auto last_h = r.series.h_at(r.series.nt() - 1);
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / static_cast<double>(last_h.size());
   const char* status = r.status == depthavg::RunStatus::Completed     ? "completed"
                        : r.status == depthavg::RunStatus::Interrupted ? "interrupted"
-                                                                      : "diverged";
+                       : r.status == depthavg::RunStatus::Diverged    ? "diverged"
+                                                                      : "failed";
 
   nlohmann::json j = {{"model", "depthavg"},
                       {"status", status},
@@ -202,7 +127,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
         {"nx", static_cast<double>(o.nx)}, {"a0", o.a0}, {"mode", static_cast<double>(o.mode)},
         {"noise", o.noise}, {"seed", static_cast<double>(o.seed)}, {"t_end", o.t_end},
         {"dt_out", out.dt_out},
-      {"frame_speed", space.frame_speed}, {"rtol", o.rtol}, {"atol", o.atol}, {"chi", chi},
+        {"frame_speed", space.frame_speed}, {"rtol", o.rtol}, {"atol", o.atol}, {"chi", chi},
         {"frame_speed", space.frame_speed},
         {"h_dry_fraction", space.h_dry_fraction}, {"mu_s", base.material.mu_s},
         {"mu_d", base.material.mu_d}, {"I0", base.material.I0}, {"d", base.material.d},
@@ -220,46 +145,12 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
     h5.close();
   }
 
-  if (o.output.json) {
-    print_json(j);
-  } else {
-    auto show = [](const nlohmann::json& v) {
-      std::ostringstream s;
-      if (v.is_null()) s << "-";
-      else s << std::setprecision(6) << v.get<double>();
-      return s.str();
-    };
-    std::cout << "depthavg run (" << status << "), chi = " << chi << ", " << o.flow.curve
-              << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0
-              << " m, Lx = " << o.Lx << " m, nx = " << o.nx << "\n"
-              << "  t reached        " << r.t_reached << " s in " << r.wall_seconds << " s wall\n"
-              << "  CVODE            " << r.stats.steps << " steps, " << r.stats.total_rhs_evals()
-              << " RHS evaluations, " << r.stats.linear_iterations << " linear iterations\n"
-              << "  mass error       " << r.mass_error() << " (relative)\n"
-              << "  flux at end      " << r.flux_final << " m^2/s\n"
-              << "  growth rate      " << show(j["growth_rate"]) << " 1/s   (7.11): "
-              << exact.growth_rate << "   (7.12): " << show(j["growth_rate_712"]) << "\n"
-              << "  phase speed      " << show(j["phase_speed"]) << " m/s   (7.11): "
-              << exact.phase_speed << "\n"
-              << "  wave speed       " << show(j["wave_speed"]) << " m/s (cross-correlation, "
-              << "second half of the run)\n";
-    if (!m.growth.found()) std::cout << "  growth rate not measured: " << m.growth.reason << "\n";
-    if (m.growth.found()) {
-      std::cout << "  growth window    " << m.growth.t_first << " .. " << m.growth.t_last << " s, "
-                << m.growth.modes.size() << " wave(s) fitted, relative residual "
-                << m.growth.relative_residual << "\n";
-      for (std::size_t i = 0; i < m.growth.modes.size(); ++i)
-        if (i != m.growth.seeded)
-          std::cout << "  other wave       growth " << m.growth.modes[i].growth_rate
-                    << " 1/s, speed " << m.growth.modes[i].phase_speed << " m/s, amplitude "
-                    << m.growth.modes[i].amplitude * 1e3
-                    << " mm (seeded: " << m.growth.modes[m.growth.seeded].amplitude * 1e3
-                    << " mm)\n";
-    }
-  }
+  print_depthavg_run(o, j, m);
   if (r.status == depthavg::RunStatus::Interrupted)
-    throw CommandFailed(r.message + "; the samples computed so far were kept", 130);
-  if (r.status == depthavg::RunStatus::Diverged) throw CommandFailed(r.message, 3);
+    throw CommandFailed(r.message + "; the samples computed so far were kept", guard.exit_code());
+  if (r.status == depthavg::RunStatus::Failed)
+    throw CommandFailed(r.message + "; the samples computed so far were kept", kExitRunFailed);
+  if (r.status == depthavg::RunStatus::Diverged) throw CommandFailed(r.message, kExitRunFailed);
 }
 
 }  // namespace granbench::cli

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "failure_policy.hpp"
 
 namespace granbench::cli {
 
@@ -53,25 +54,14 @@ struct DepthAvgOptions {
 void add_depthavg_options(CLI::App& app, DepthAvgOptions& o);
 // Shape factor from its option text; UsageError naming --chi otherwise.
 double parse_chi(const std::string& text);
+// Frame speed from its option text ('linear': `linear_speed`); UsageError naming --frame-speed.
+double parse_frame_speed(const std::string& text, double linear_speed);
 
-// Ctrl-C (SIGINT) raises the flag instead of killing the process while a guard lives, so a run
-// can stop at its next sample and keep what it computed. With Signals::IntAndTerm, SIGTERM (a
-// batch system's or `kill`'s stop) does the same.
-class InterruptGuard {
- public:
-  enum class Signals { Int, IntAndTerm };
-  explicit InterruptGuard(Signals signals = Signals::Int);
-  ~InterruptGuard();
-  const std::atomic<bool>* flag() const;
-  InterruptGuard(const InterruptGuard&) = delete;
-  InterruptGuard& operator=(const InterruptGuard&) = delete;
+// InterruptGuard (Ctrl-C and SIGTERM keep what was computed) is part of the failure policy.
 
- private:
-  bool term_;
-};
-
-// Runs the depth-averaged model; prints the table or JSON, writes --out. Throws CommandFailed
-// (after writing what was computed) when interrupted (exit 130) or diverged (exit 3).
+// Runs the depth-averaged model; prints the table or JSON, writes --out (checked before any
+// work). Throws CommandFailed (after writing what was computed) when interrupted (exit 130 on
+// SIGINT, 143 on SIGTERM) or diverged or failed (exit 3).
 void run_depthavg(const RunOptions& run, const DepthAvgOptions& model);
 
 // The checks of `run` that span several options (a0 below h0, mode at most nx/2): UsageError.

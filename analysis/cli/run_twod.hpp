@@ -5,12 +5,15 @@
 
 #include <CLI/CLI.hpp>
 #include <atomic>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "parameters.hpp"
 #include "run.hpp"
 #include "run_model.hpp"
+#include "solver.hpp"
+#include "steady_state.hpp"
 #include "surface_measurement.hpp"
 
 namespace granbench::cli {
@@ -29,10 +32,15 @@ struct TwodOptions {
   double dt_max = 1e-3;         // [s]
   double tolerance = 1e-10;     // relative residual of the linear solves
   double dt_snapshot = 0.0;     // interval of the 2D field snapshots [s]; 0: t_end/10
-  std::string checkpoint;       // written on SIGINT/SIGTERM; default <out>.checkpoint.h5
+  std::string checkpoint;       // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
+  double checkpoint_every = 1.0;  // simulated time between checkpoints [s]; 0: only at a stop
   std::string restart;          // continue from this checkpoint
 };
-void add_twod_options(CLI::App& app, TwodOptions& o);
+void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
+
+// The solver parameters of these options (twod_options.cpp); UsageError naming the option when
+// they are inconsistent. `Lz` receives the domain height used.
+twod::SolverParams twod_solver_params(const RunOptions& run, const TwodOptions& model, double& Lz);
 
 // One 2D run as `granbench run --model twod --json` reports it.
 struct TwodRunReport {
@@ -43,18 +51,29 @@ struct TwodRunReport {
   double Lz = 0.0;            // the domain height used [m]
 };
 
-// Validates the options (UsageError), runs the 2D model until t_end or *stop, writes --out
-// (+ .xdmf) and, when stopped, the checkpoint. Prints only the progress line on stderr. Used by
-// `run` and by `case` (the rollwave cases), so both run the same code in this process.
+// Validates the options and paths (UsageError, before any work), runs the 2D model until t_end
+// or *stop, writes --out (+ .xdmf) and the checkpoints (twod/run_output.hpp): on the
+// --checkpoint-every schedule, removed when the run completes, and at a stop. Prints only the
+// progress line on stderr. Used by `run` and by `case` (the rollwave cases), so both run the
+// same code in this process.
 TwodRunReport run_twod_model(const RunOptions& run, const TwodOptions& model,
                              const std::atomic<bool>* stop);
 
+// The progress line on stderr (at most once a wall second), or an empty hook when `show` is
+// false; and the keys of a 2D run's JSON that come from the run itself (twod_report.cpp).
+std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_line(
+    const RunOptions& run, bool show);
+nlohmann::json twod_result_json(const twod::RunResult& result, const twod::Solver& solver,
+                                const SteadyState& base, const SurfaceMeasurement& growth,
+                                double seeded_speed, double dt_out);
+
 // `granbench run --model twod`: run_twod_model under Ctrl-C and SIGTERM handling; prints the
-// table or JSON. Throws CommandFailed after saving what was computed when interrupted (exit 130,
-// with a checkpoint), diverged (exit 3) or failed otherwise (exit 1).
+// table or JSON (twod_report.cpp). Throws CommandFailed after saving what was computed when
+// interrupted (exit 130 or 143, with a checkpoint), diverged or failed (exit 3).
 void run_twod(const RunOptions& run, const TwodOptions& model);
 
-// The exit of a finished 2D run: nothing when completed, else CommandFailed with the code above.
-void throw_unless_completed(const TwodRunReport& report);
+// The exit of a finished 2D run: nothing when completed, else CommandFailed with the code of
+// the failure policy (failure_policy.hpp); `guard` tells SIGINT from SIGTERM.
+void throw_unless_completed(const TwodRunReport& report, const InterruptGuard& guard);
 
 }  // namespace granbench::cli

@@ -1,0 +1,133 @@
+// What `granbench run --model twod` shows: the progress line, the JSON keys of a run, the table,
+// and the exit code of the failure policy (run_twod.hpp).
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+
+#include "commands.hpp"
+#include "diagnostics.hpp"
+#include "measurement_json.hpp"
+#include "run_twod.hpp"
+#include "wave_speed.hpp"
+
+namespace granbench::cli {
+
+std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_line(
+    const RunOptions& o, bool show) {
+  if (!show) return {};
+  const auto wall0 = std::chrono::steady_clock::now();
+  return [wall0, t_end = o.t_end, last = 0.0](const twod::Solver& s, const SurfaceSeries&) mutable {
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    if (wall - last <= 1.0) return;
+    last = wall;
+    std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << s.state().t << " / " << t_end
+              << " s, step " << s.statistics().steps << ", dt " << std::scientific
+              << std::setprecision(2) << s.statistics().dt_last << " s, wall " << std::fixed
+              << std::setprecision(0) << wall << " s    " << std::flush;
+  };
+}
+
+nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& solver,
+                                const SteadyState& base, const SurfaceMeasurement& growth,
+                                double seeded_speed, double dt_out) {
+  const SurfaceSeries& kept = res.series;
+  const twod::RunStatistics st = solver.statistics();
+  std::optional<WaveSpeed> wave;
+  if (kept.nt() >= 8) {
+    try {
+      wave = wave_speed(kept, 0.5 * kept.t.back(), kept.t.back());
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  const auto last_h = kept.h_at(kept.nt() - 1);
+  double h_mean = 0.0;
+  for (double v : last_h) h_mean += v / double(last_h.size());
+  const double wall = res.wall_seconds;
+  return {{"model", "twod"},
+          {"t_reached", solver.state().t},
+          {"steps", st.steps},
+          {"viscous_iterations", st.viscous_iterations},
+          {"projection_iterations", st.projection_iterations},
+          {"wall_seconds", wall},
+          {"cell_updates_per_second", double(st.steps) * solver.grid().cells() / std::max(wall, 1e-9)},
+          {"mass_error", st.mass_error()},
+          {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
+          {"max_divergence", st.max_divergence},
+          {"dt_min", st.dt_min},
+          {"dt_max", st.dt_max},
+          {"h_mean", h_mean},
+          {"flux", twod::mean_flux(solver.grid(), solver.state())},
+          {"growth_rate", number_or_null(growth.growth_rate)},
+          {"phase_speed", number_or_null(growth.phase_speed)},
+          {"modes", modes_json(growth)},
+          {"phase_speed_theory", number_or_null(seeded_speed)},
+          {"growth_window", window_json(growth)},
+          {"growth_window_found", growth.found()},
+          {"growth_fit_residual", number_or_null(growth.relative_residual)},
+          {"growth_note", growth.reason},
+          {"growth_data_note", growth.note},
+          {"wave_speed", wave ? number_or_null(wave->speed) : nullptr},
+          {"wave_speed_spread", wave ? number_or_null(wave->spread) : nullptr},
+          {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
+          {"illposed_fraction", res.last.illposed_fraction},
+          {"illposed_fraction_max", res.illposed_fraction_max},
+          {"dt_out", dt_out},
+          {"F", base.Fr},
+          {"u_mean", base.u_mean}};
+}
+
+void run_twod(const RunOptions& o, const TwodOptions& mo) {
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
+  const TwodRunReport r = run_twod_model(o, mo, guard.flag());
+  const nlohmann::json& j = r.json;
+  if (o.output.json) {
+    print_json(j);
+  } else {
+    auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
+    const SurfaceMeasurement& growth = r.growth;
+    std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
+              << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "
+              << o.nx << " x " << mo.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"
+              << "  t reached        " << j["t_reached"].get<double>() << " s in "
+              << j["wall_seconds"].get<double>() << " s wall, " << j["steps"].get<long>()
+              << " steps\n"
+              << "  mass error       " << j["mass_error"].get<double>() << " (relative)\n"
+              << "  h mean, flux     " << j["h_mean"].get<double>() << " m, "
+              << j["flux"].get<double>() << " m^2/s\n"
+              << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
+              << show("phase_speed") << " m/s"
+              << (growth.found() ? "" : "  (not measured: " + growth.reason + ")") << "\n";
+    for (std::size_t i = 0; i < growth.modes.size(); ++i)
+      if (i != growth.seeded)
+        std::cout << "  other wave       growth " << growth.modes[i].growth_rate << " 1/s, speed "
+                  << growth.modes[i].phase_speed << " m/s, amplitude "
+                  << growth.modes[i].amplitude * 1e3 << " mm (seeded "
+                  << growth.modes[growth.seeded].amplitude * 1e3 << " mm)\n";
+    const auto& I = j["I_range"];
+    std::cout << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
+              << "  I range          "
+              << (I.is_null() ? std::string("-")
+                              : std::to_string(I[0].get<double>()) + " .. " +
+                                    std::to_string(I[1].get<double>()))
+              << ", ill-posed fraction " << j["illposed_fraction"].get<double>() << " (max "
+              << j["illposed_fraction_max"].get<double>() << ")\n";
+  }
+  throw_unless_completed(r, guard);
+}
+
+void throw_unless_completed(const TwodRunReport& r, const InterruptGuard& guard) {
+  switch (r.status) {
+    case twod::RunStatus::Completed:
+      return;
+    case twod::RunStatus::Interrupted:
+      throw CommandFailed(r.message + "; the samples computed so far were kept", guard.exit_code());
+    case twod::RunStatus::Diverged:
+      throw CommandFailed(r.message, kExitRunFailed);
+    case twod::RunStatus::Failed:
+      throw CommandFailed(r.message + "; the samples computed so far were kept", kExitRunFailed);
+  }
+}
+
+}  // namespace granbench::cli

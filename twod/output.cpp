@@ -20,6 +20,13 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   out.create_group(group);
   const Rheology& r = p.rheology;
   const Material& m = r.material;
+  // The flow's inputs and the grid also on the root, where every granbench file keeps them.
+  if (group != "/") {
+    write_flow_inputs(out, std::string(curve_name(r.curve)), m, p.zeta * 180.0 / std::numbers::pi,
+                      NAN);
+    out.attribute("/", "nx", g.nx);
+    out.attribute("/", "nz", g.nz);
+  }
   auto a = [&](const char* key, double v) { out.attribute(group, key, v); };
   a("nx", g.nx);
   a("nz", g.nz);

@@ -53,7 +53,7 @@ Theory parse_theory(const std::string& t) {
 }
 
 void write_dispersion_data(const std::string& path, const SteadyState& s, double chi,
-                           const std::vector<DispersionMode>& modes) {
+                           const std::vector<DispersionMode>& modes, const std::string& curve) {
   // The curve over k_hat (log grid) and the chosen points, dimensional and non-dimensional.
   const DispersionParams p = DispersionParams::from(s, chi);
   std::vector<double> pk, pg, pc, pL;
@@ -74,7 +74,7 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
   out.attribute("/", "R", p.R);
   out.attribute("/", "Gamma", p.Gamma);
   out.attribute("/", "u_mean", s.u_mean);
-  out.attribute("/", "h0", s.h0);
+  write_flow_inputs(out, curve, s.material, s.zeta * 180.0 / std::numbers::pi, s.h0);
   out.close();
 }
 
@@ -95,7 +95,7 @@ void run_dispersion(const DispersionOptions& o) {
 
   if (!o.output.out.empty() || !o.output.plot.empty()) {
     const std::string h5 = !o.output.out.empty() ? o.output.out : o.output.plot + ".data.h5";
-    write_dispersion_data(h5, s, chi, modes);
+    write_dispersion_data(h5, s, chi, modes, o.flow.curve);
     if (!o.output.plot.empty()) {
       run_plot_script("dispersion.py", h5, o.output.plot);
       if (o.output.out.empty()) std::filesystem::remove(h5);

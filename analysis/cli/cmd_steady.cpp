@@ -36,9 +36,9 @@ void run_steady(const SteadyOptions& o) {
     out.write("profile/p", p);
     for (auto [k, v] : {std::pair{"I_zeta", s.I_zeta}, {"u_surface", s.u_surface},
                         {"u_mean", s.u_mean}, {"Fr", s.Fr}, {"R", s.R}, {"Gamma", s.Gamma},
-                        {"nu", s.nu}, {"angle_deg", o.flow.angle_deg}, {"h0", s.h0}})
+                        {"nu", s.nu}})
       out.attribute("/", k, v);
-    out.attribute("/", "curve", o.flow.curve);
+    write_flow_inputs(out, o.flow.curve, o.flow.material, o.flow.angle_deg, s.h0);
     out.close();
   }
   const double Fc = critical_froude(1.0);

@@ -1,6 +1,7 @@
 // granbench wellposed: where a mu(I) curve keeps the incompressible equations well posed
 // (Barker & Gray 2017, §3-§4, figures 1, 2 and 7): neutral points (roots of C(I), (3.9)), the
 // well-posed intervals of I, A_- of the regularised curve (6.4) and its largest well-posed I.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -33,7 +34,8 @@ nlohmann::json wellposed(const WellposedOptions& o, const MuCurve& curve,
     {
       H5Writer out(h5);
       write_well_posedness_figures(out, fig);
-      out.attribute("/", "curve", std::string(curve_name(curve.kind())));
+      // No slope here: the curve and the material (and h0, which the Holyoake curve uses).
+      write_flow_inputs(out, std::string(curve_name(curve.kind())), o.flow.material, NAN, o.flow.h0);
       out.close();
     }
     if (!o.output.plot.empty()) {

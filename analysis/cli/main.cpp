@@ -13,11 +13,14 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "config_file.hpp"
+#include "provenance.hpp"
 
 int main(int argc, char** argv) {
   using namespace granbench::cli;
   CLI::App app{"granbench: depth-averaged and 2D mu(I) chute flows against exact theory"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "granbench " + granbench::granbench_version() + " (commit " +
+                                        granbench::granbench_git_commit() + ")");
   add_wellposed_command(app);
   add_steady_command(app);
   add_dispersion_command(app);
@@ -34,6 +37,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "granbench: error: " << e.what() << "\n";

@@ -183,9 +183,7 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
   }
   out.write("settings", values);
   out.attribute("settings", "names", names);
-  out.attribute("/", "curve", std::string(curve_name(k.curve)));
-  out.attribute("/", "angle_deg", k.angle_deg);
-  out.attribute("/", "h0", k.h0);
+  write_flow_inputs(out, std::string(curve_name(k.curve)), k.material, k.angle_deg, k.h0);
   out.attribute("/", "u_mean", base.u_mean);
   out.attribute("/", "depthavg_chi", spec.depthavg_settings.chi);
   out.attribute("/", "depthavg_measurement", spec.depthavg_linear ? "linear_run" : "seeded_run");

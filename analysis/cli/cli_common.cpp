@@ -84,11 +84,21 @@ void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
   app.add_option("--phi", m.phi, "solids volume fraction phi, in (0, 1)")->check(open_range(0.0, 1.0))->group(g)->capture_default_str();
   app.add_option("--rho-star", m.rho_star, "grain density [kg/m^3]")->check(positive())->group(g)->capture_default_str();
   app.add_option("--g", m.g, "gravity [m/s^2]")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3)")->group(g)->capture_default_str();
+  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3), > 0")->check(positive())->group(g)->capture_default_str();
   app.add_option("--alpha", m.alpha, "low-I regularisation alpha of (5.2)/(6.3), in (0, 2)")->check(open_range(0.0, 2.0))->group(g)->capture_default_str();
   app.add_option("--kk-mu0", m.kk_mu0, "Kamrin-Koval mu_0 of (5.1)")->check(positive())->group(g)->capture_default_str();
   app.add_option("--kk-cK", m.kk_cK, "Kamrin-Koval c_K of (5.1)")->check(positive())->group(g)->capture_default_str();
   app.add_option("--hm-c", m.hm_c, "Holyoake-McElwaine c of (6.1)")->check(positive())->group(g)->capture_default_str();
+  // Every curve rises from mu_s to mu_d: with mu_s >= mu_d there is no curve, and the errors
+  // would come later, blamed on --angle.
+  app.parse_complete_callback([&m] {
+    if (!(m.mu_s < m.mu_d)) {
+      std::ostringstream msg;
+      msg << "--mu-s: value " << m.mu_s << " is not below --mu-d " << m.mu_d
+          << "; valid: mu_s < mu_d";
+      throw UsageError(msg.str());
+    }
+  });
 }
 
 void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli_common.hpp"
+#include "help_footer.hpp"
 #include "commands.hpp"
 #include "dispersion.hpp"
 #include "dispersion_curve.hpp"
@@ -148,6 +149,9 @@ void add_dispersion_command(CLI::App& app) {
   auto opts = std::make_shared<DispersionOptions>();
   CLI::App* sub = app.add_subcommand(
       "dispersion", "exact linear growth rate and phase speed for domain lengths Lx (7.11)");
+  sub->footer(help_footer({"granbench dispersion --Lx 0.04 --Lx 0.08 --json",
+                           "granbench dispersion --theory twod --Lx 0.08 --out dispersion.h5"},
+                          {0, 2}));
   add_flow_options(*sub, opts->flow);
   add_output_options(*sub, opts->output);
   sub->add_option("--Lx", opts->Lx, "domain length(s) = wavelength(s) [m], > 0")

@@ -15,6 +15,7 @@
 // (sweep_models.hpp): finished points are kept in --out and a re-run skips them. The options and
 // the spec they make: sweep_plan.hpp.
 #include "commands.hpp"
+#include "help_footer.hpp"
 #include "sweep_models.hpp"
 #include "sweep_plan.hpp"
 
@@ -24,6 +25,10 @@ void add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* sub = app.add_subcommand(
       "sweep", "measured linear growth rate and phase speed over domain lengths vs (7.11)");
+  sub->footer(help_footer({"granbench sweep --model depthavg --Lx 0.03:0.4:12 --jobs 2 --json",
+                           "granbench sweep --model both --Lx 0.01:0.08:8 --out sweep.h5",
+                           "mpirun -np 4 granbench sweep --Lx 0.02:0.4:32 --jobs 1 --out sweep.h5"},
+                          {0, 2, 3, 130}));
   add_sweep_options(*sub, *o);
   sub->callback([o, sub] {
     SweepPlan plan = plan_sweep(*o, *sub);

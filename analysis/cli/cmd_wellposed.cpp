@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "help_footer.hpp"
 #include "commands.hpp"
 #include "wellposedness_figures.hpp"
 
@@ -107,6 +108,9 @@ void add_wellposed_command(CLI::App& app) {
   auto opts = std::make_shared<WellposedOptions>();
   CLI::App* sub = app.add_subcommand(
       "wellposed", "neutral points and well-posed ranges of I for a mu(I) curve (§3-§4)");
+  sub->footer(help_footer({"granbench wellposed --curve jop --json",
+                           "granbench wellposed --curve regularised --out wp.h5 --plot wp.png"},
+                          {0, 2}));
   add_flow_options(*sub, opts->flow, /*add_slope=*/false);
   add_output_options(*sub, opts->output);
   sub->callback([opts] { run_wellposed(*opts); });

@@ -9,13 +9,17 @@ from paraview import simple as pv
 path, nx, nz = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 failures = []
 for reader in ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT"):
-    source = getattr(pv, reader)(FileName=[path] if reader != "XDMFReader" else path)
-    source.UpdatePipeline()
+    # The legacy reader names its file property FileNames, the Xdmf3 readers FileName.
+    name = "FileNames" if reader == "XDMFReader" else "FileName"
+    source = getattr(pv, reader)(**{name: [path]})
     times = list(source.TimestepValues or [])
-    data = pv.servermanager.Fetch(source)
-    block = data.GetBlock(0) if data.IsA("vtkMultiBlockDataSet") else data
+    # MergeBlocks gives one data set whatever the reader's output (a grid, or blocks of one).
+    merged = pv.MergeBlocks(Input=source)
+    merged.UpdatePipeline(times[-1] if times else 0.0)
+    block = pv.servermanager.Fetch(merged)
     cells = block.GetNumberOfCells() if block else 0
-    arrays = {block.GetCellData().GetArrayName(i) for i in range(block.GetCellData().GetNumberOfArrays())} if block else set()
+    data = block.GetCellData() if block else None
+    arrays = {data.GetArrayName(i) for i in range(data.GetNumberOfArrays())} if data else set()
     if cells != nx * nz:
         failures.append(f"{reader}: {cells} cells, not {nx * nz}")
     missing = {"u", "w", "p", "f", "I", "eta", "C", "velocity"} - arrays

@@ -53,7 +53,16 @@ CLI::Validator one_of(const std::vector<std::string>& values) {
 
 CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
 
-MuCurve FlowOptions::make_curve() const { return MuCurve(curve_kind(), material, h0); }
+MuCurve FlowOptions::make_curve() const {
+  // Some material values leave no curve of this kind to build (the regularised and low-I curves
+  // need a neutral point of the upper branch): bad input, not an internal error.
+  try {
+    return MuCurve(curve_kind(), material, h0);
+  } catch (const std::runtime_error& e) {
+    throw UsageError("--curve: the " + curve + " curve cannot be built from these material values (" +
+                     e.what() + "); valid: --mu-s, --mu-d, --I0, --alpha for which it exists, or another --curve");
+  }
+}
 
 SteadyState FlowOptions::steady() const {
   try {

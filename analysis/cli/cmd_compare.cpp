@@ -5,17 +5,18 @@
 // SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
 #include <cmath>
 #include <filesystem>
-#include <future>
+#include <numbers>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "compare.hpp"
 #include "compare_output.hpp"
-#include "measurement_json.hpp"
+#include "measurement.hpp"
 #include "output_checks.hpp"
 #include "run_model.hpp"
 
@@ -39,35 +40,15 @@ struct CompareOptions {
   int viscosity_passes = 1;
 };
 
-nlohmann::json opt(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
-// measure() fits the whole run only when there are three samples or more; a zero-initialised fit
-// is no measurement and is shown as n/a, never as a growth rate of 0.
-bool whole_run_fitted(const Measurement& m) { return m.whole_run.last > m.whole_run.first; }
-
 nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
-  nlohmann::json j{
-      {"growth_rate", number_or_null(m.spectral.growth_rate)},
-      {"phase_speed", number_or_null(m.spectral.phase_speed)},
-      {"modes", modes_json(m.spectral)},
-      {"growth_rate_712", opt(m.growth_712)},
-      {"fit_window", window_json(m.spectral)},
-      {"fit_residual", number_or_null(m.spectral.relative_residual)},
-      {"fit_r2", number_or_null(m.spectral.log_amplitude_r2)},
-      {"fit_window_found", m.spectral.found()},
-      {"reason", m.spectral.found() ? nlohmann::json(nullptr) : nlohmann::json(m.spectral.reason)},
-      {"growth_rate_whole_run", whole_run_fitted(m) ? nlohmann::json(m.whole_run.slope) : nullptr},
-      {"whole_run_r2", whole_run_fitted(m) ? nlohmann::json(m.whole_run.r2) : nullptr},
-      {"wave_speed", opt(m.wave_speed)},
-      {"amplitude", opt(m.amplitude)},
-      {"final_amplitude", m.final_amplitude},
+  nlohmann::json j = to_json(m);  // the measurement, spelled as in every command
+  j.update({
       {"steps", r.steps},
       {"wall_seconds", r.wall_seconds},
       {"mass_error", r.mass_error},
       {"flux", r.flux},
-      {"completed", r.outcome == RunOutcome::Completed}};
+      {"completed", r.outcome == RunOutcome::Completed},
+      {"run_command", r.run_command}});
   if (!r.message.empty()) j["message"] = r.message;
   if (r.model == "twod") {
     j["I_range"] = {r.I_min, r.I_max};
@@ -134,9 +115,9 @@ void print_table(const Comparison& c) {
     else
       std::cout << "; whole-run fit of ln|h_k| n/a (fewer than 3 samples)\n";
     if (!w.note.empty()) std::cout << "  " << name << ": " << w.note << "\n";
-    if (m->saturated)
-      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << *m->wave_speed
-                << " m/s, amplitude " << *m->amplitude * 1e3 << " mm\n";
+    if (m->saturated && m->wave)
+      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << m->wave->speed
+                << " m/s, amplitude " << m->final_amplitude * 1e3 << " mm\n";
   }
   std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
             << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps
@@ -191,10 +172,18 @@ void run_compare(const CompareOptions& o) {
   Comparison c;
   c.chute = chute;
   c.base = chute.steady();
-  // Both models at once (run_both shares the cores); the exact theories meanwhile on this thread.
-  auto runs = std::async(std::launch::async, [&] { return run_both(chute, depthavg, twod, ctl); });
-  c.theory = exact_theories(chute);
-  std::tie(c.depthavg, c.twod) = runs.get();
+  // The exact theories first (about a second): the 2D eigenmode seeds the 2D run, and a case
+  // where the 2D linear stability has no surface mode (e.g. --Lx 1e9 --h0 29.1) is bad input,
+  // refused before any run.
+  try {
+    c.theory = exact_theories(chute);
+  } catch (const std::runtime_error& e) {
+    throw UsageError("--Lx: no 2D linear surface mode at k_hat = 2 pi h0/Lx = " +
+                     std::to_string(2.0 * std::numbers::pi * chute.h0 / chute.Lx) + " (" +
+                     e.what() + "); choose another --Lx or --h0");
+  }
+  // Both models at once (run_both shares the cores).
+  std::tie(c.depthavg, c.twod) = run_both(chute, depthavg, twod, ctl);
   if (show) std::cerr << "\n";
   // Each model's seeded wave is the one nearest its own theory's phase speed.
   MeasureOptions depthavg_opt, twod_opt;

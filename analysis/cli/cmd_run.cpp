@@ -58,6 +58,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--atol", o.atol, "CVODE absolute tolerance [m of h], > 0")
       ->check(positive())
       ->capture_default_str();
+  app.add_option("--bdf-order", o.bdf_order,
+                 "CVODE BDF order limit (depthavg), in [1, 5]; default: 2 in a co-moving frame, 5 "
+                 "in the lab frame (depthavg/params.hpp)")
+      ->check(CLI::Range(1, 5));
   add_output_options(app, o.output, false);
   add_threads_option(app);
 }

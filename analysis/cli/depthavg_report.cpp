@@ -1,4 +1,4 @@
-// What `granbench run --model depthavg` measures and prints (depthavg_report.hpp).
+// What `granbench run --model depthavg` prints (depthavg_report.hpp).
 #include "depthavg_report.hpp"
 
 #include <iomanip>
@@ -9,28 +9,7 @@
 
 namespace granbench::cli {
 
-DepthAvgMeasured measure_depthavg(const SurfaceSeries& s, int mode, double expected_speed) {
-  DepthAvgMeasured m;
-  MeasureOptions opt;
-  opt.mode = mode;
-  opt.seeded_phase_speed = expected_speed;
-  m.growth = measure_surface_series(s, opt);
-  if (m.growth.found()) {
-    try {
-      m.e712 = growth_estimate_712(s, m.growth.t_first, m.growth.t_last);
-    } catch (const std::invalid_argument&) {
-      // (7.12) needs max h > h0 throughout the window.
-    }
-  }
-  if (s.nt() < 8) return m;
-  try {
-    m.wave = wave_speed(s, 0.5 * s.t.back(), s.t.back());
-  } catch (const std::invalid_argument&) {
-  }
-  return m;
-}
-
-void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const DepthAvgMeasured& m) {
+void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Measurement& m) {
   if (o.output.json) {
     print_json(j);
   } else {
@@ -53,18 +32,18 @@ void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Dept
               << "  phase speed      " << show(j["phase_speed"]) << " m/s   (7.11): "
               << j["phase_speed_exact"].get<double>() << "\n"
               << "  wave speed       " << show(j["wave_speed"]) << " m/s (cross-correlation, "
-              << "second half of the run)\n";
-    if (!m.growth.found()) std::cout << "  growth rate not measured: " << m.growth.reason << "\n";
-    if (m.growth.found()) {
-      std::cout << "  growth window    " << m.growth.t_first << " .. " << m.growth.t_last << " s, "
-                << m.growth.modes.size() << " wave(s) fitted, relative residual "
-                << m.growth.relative_residual << "\n";
-      for (std::size_t i = 0; i < m.growth.modes.size(); ++i)
-        if (i != m.growth.seeded)
-          std::cout << "  other wave       growth " << m.growth.modes[i].growth_rate
-                    << " 1/s, speed " << m.growth.modes[i].phase_speed << " m/s, amplitude "
-                    << m.growth.modes[i].amplitude * 1e3
-                    << " mm (seeded: " << m.growth.modes[m.growth.seeded].amplitude * 1e3
+              << "last fifth of the run)\n";
+    if (!m.spectral.found()) std::cout << "  growth rate not measured: " << m.spectral.reason << "\n";
+    if (m.spectral.found()) {
+      std::cout << "  growth window    " << m.spectral.t_first << " .. " << m.spectral.t_last << " s, "
+                << m.spectral.modes.size() << " wave(s) fitted, relative residual "
+                << m.spectral.relative_residual << "\n";
+      for (std::size_t i = 0; i < m.spectral.modes.size(); ++i)
+        if (i != m.spectral.seeded)
+          std::cout << "  other wave       growth " << m.spectral.modes[i].growth_rate
+                    << " 1/s, speed " << m.spectral.modes[i].phase_speed << " m/s, amplitude "
+                    << m.spectral.modes[i].amplitude * 1e3
+                    << " mm (seeded: " << m.spectral.modes[m.spectral.seeded].amplitude * 1e3
                     << " mm)\n";
     }
   }

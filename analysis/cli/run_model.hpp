@@ -39,6 +39,7 @@ struct RunOptions {
   double dt_out = 0.0;         // sampling interval [s]; 0: automatic
   double rtol = 1e-6;
   double atol = 1e-10;
+  int bdf_order = 0;           // CVODE's BDF order limit; 0: 2 co-moving, 5 in the lab frame
 };
 void add_run_options(CLI::App& app, RunOptions& o);
 

@@ -133,8 +133,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   MeasureOptions measure_opt;
   measure_opt.mode = o.mode;
   measure_opt.seeded_phase_speed = seeded_speed;
-  report.growth = measure_surface_series(res.series, measure_opt);
-  report.json = twod_result_json(res, solver, base, report.growth, seeded_speed, schedule.dt_out);
+  report.measured = measure(res.series, measure_opt);
+  report.json = twod_result_json(res, solver, base, report.measured, seeded_speed, schedule.dt_out);
   report.json["status"] = run_status_name(res.status);
   report.json["message"] = message;
   report.json["eta_max"] = mo.eta_max;

@@ -14,7 +14,7 @@
 #include "run_model.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
-#include "surface_measurement.hpp"
+#include "measurement.hpp"
 
 namespace granbench::cli {
 
@@ -47,7 +47,7 @@ struct TwodRunReport {
   nlohmann::json json;  // the keys printed by --json
   twod::RunStatus status = twod::RunStatus::Completed;
   std::string message;        // why it stopped early (with the checkpoint's path)
-  SurfaceMeasurement growth;  // the measurement behind json's growth keys
+  Measurement measured;  // the measurement behind json's growth keys
   double Lz = 0.0;            // the domain height used [m]
 };
 
@@ -64,7 +64,7 @@ TwodRunReport run_twod_model(const RunOptions& run, const TwodOptions& model,
 std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_line(
     const RunOptions& run, bool show);
 nlohmann::json twod_result_json(const twod::RunResult& result, const twod::Solver& solver,
-                                const SteadyState& base, const SurfaceMeasurement& growth,
+                                const SteadyState& base, const Measurement& measured,
                                 double seeded_speed, double dt_out);
 
 // `granbench run --model twod`: run_twod_model under Ctrl-C and SIGTERM handling; prints the

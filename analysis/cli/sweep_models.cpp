@@ -113,6 +113,7 @@ nlohmann::json point_json(const SweepPoint& p) {
       {"wall_seconds", p.wall_seconds},
       {"completed", p.completed},
       {"resumed", p.resumed},
+      {"run_command", p.run_command.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.run_command)},
       {"status", p.completed         ? "completed"
                  : p.message.empty() ? "unfinished"
                                      : p.message}};

@@ -8,9 +8,8 @@
 
 #include "commands.hpp"
 #include "diagnostics.hpp"
-#include "measurement_json.hpp"
+#include "measurement.hpp"
 #include "run_twod.hpp"
-#include "wave_speed.hpp"
 
 namespace granbench::cli {
 
@@ -30,22 +29,15 @@ std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_lin
 }
 
 nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& solver,
-                                const SteadyState& base, const SurfaceMeasurement& growth,
+                                const SteadyState& base, const Measurement& measured,
                                 double seeded_speed, double dt_out) {
   const SurfaceSeries& kept = res.series;
   const twod::RunStatistics st = solver.statistics();
-  std::optional<WaveSpeed> wave;
-  if (kept.nt() >= 8) {
-    try {
-      wave = wave_speed(kept, 0.5 * kept.t.back(), kept.t.back());
-    } catch (const std::invalid_argument&) {
-    }
-  }
   const auto last_h = kept.h_at(kept.nt() - 1);
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / double(last_h.size());
   const double wall = res.wall_seconds;
-  return {{"model", "twod"},
+  nlohmann::json j = {{"model", "twod"},
           {"t_reached", solver.state().t},
           {"steps", st.steps},
           {"viscous_iterations", st.viscous_iterations},
@@ -59,23 +51,15 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
           {"dt_max", st.dt_max},
           {"h_mean", h_mean},
           {"flux", twod::mean_flux(solver.grid(), solver.state())},
-          {"growth_rate", number_or_null(growth.growth_rate)},
-          {"phase_speed", number_or_null(growth.phase_speed)},
-          {"modes", modes_json(growth)},
           {"phase_speed_theory", number_or_null(seeded_speed)},
-          {"growth_window", window_json(growth)},
-          {"growth_window_found", growth.found()},
-          {"growth_fit_residual", number_or_null(growth.relative_residual)},
-          {"growth_note", growth.reason},
-          {"growth_data_note", growth.note},
-          {"wave_speed", wave ? number_or_null(wave->speed) : nullptr},
-          {"wave_speed_spread", wave ? number_or_null(wave->spread) : nullptr},
           {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
           {"illposed_fraction", res.last.illposed_fraction},
           {"illposed_fraction_max", res.illposed_fraction_max},
           {"dt_out", dt_out},
           {"F", base.Fr},
           {"u_mean", base.u_mean}};
+  j.update(to_json(measured));  // the measurement, spelled as in every command
+  return j;
 }
 
 void run_twod(const RunOptions& o, const TwodOptions& mo) {
@@ -86,7 +70,7 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     print_json(j);
   } else {
     auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
-    const SurfaceMeasurement& growth = r.growth;
+    const SurfaceMeasurement& growth = r.measured.spectral;
     std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
               << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "
               << o.nx << " x " << mo.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"

@@ -14,8 +14,7 @@
 
 #include "chute_case.hpp"
 #include "model_runs.hpp"
-#include "spectral_growth.hpp"
-#include "surface_measurement.hpp"
+#include "measurement.hpp"
 
 namespace granbench {
 
@@ -23,22 +22,6 @@ struct TheoryValue {
   double growth_rate = 0.0;  // [1/s]
   double phase_speed = 0.0;  // [m/s]
 };
-
-struct Measurement {
-  SurfaceMeasurement spectral;  // the seeded mode and the other waves at its wavenumber
-  // ln|h_k| fitted over the whole run after the first tenth: robust where the automatic window is
-  // not (a beating of two waves at the seeded wavenumber, as the 2D runs show).
-  LinearFit whole_run;
-  std::optional<double> growth_712;   // (7.12) averaged over the spectral fit's window, if any
-  bool saturated = false;             // amplitude steady over the last fifth of the run
-  std::optional<double> wave_speed;   // [m/s], when saturated
-  std::optional<double> amplitude;    // (max h - min h)/2 at the end [m], when saturated
-  double final_amplitude = 0.0;       // (max h - min h)/2 at the end [m]
-};
-
-// The same measurement as `granbench run`'s (measure_surface_series with opt), plus the
-// comparison's extras. opt.seeded_phase_speed: the model's own theory's phase speed.
-Measurement measure(const SurfaceSeries& s, const MeasureOptions& opt = {});
 
 struct Theories {
   double k_hat = 0.0;

@@ -31,8 +31,9 @@ void write_measurement(H5Writer& out, const std::string& g, const ModelRun& r,
     rows.insert(rows.end(), {v.growth_rate, v.phase_speed, v.amplitude});
   if (!rows.empty()) out.write(g + "/modes", rows, {w.modes.size(), 3});
   out.attribute(g, "growth_rate_712", m.growth_712.value_or(NAN));
-  out.attribute(g, "wave_speed", m.wave_speed.value_or(NAN));
-  out.attribute(g, "amplitude", m.amplitude.value_or(NAN));
+  // the developed wave's speed and amplitude, when it has saturated
+  out.attribute(g, "wave_speed", m.saturated && m.wave ? m.wave->speed : NAN);
+  out.attribute(g, "amplitude", m.saturated ? m.final_amplitude : NAN);
   out.attribute(g, "steps", static_cast<double>(r.steps));
   out.attribute(g, "wall_seconds", r.wall_seconds);
   out.attribute(g, "mass_error", r.mass_error);

@@ -23,6 +23,7 @@
 #include "eigenmode_seed.hpp"
 #include "linear2d_eigenmode.hpp"
 #include "linear_stability_2d.hpp"
+#include "run_command.hpp"
 #include "twod/diagnostics.hpp"
 #include "twod/initial_state.hpp"
 #include "twod/run.hpp"
@@ -79,6 +80,8 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   m.mass_error = r.mass_error();
   m.flux = r.flux_final;
   m.seeded_growth_rate = exact.growth_rate;
+  m.dt_out = out.dt_out;
+  m.run_command = depthavg_run_command(c, s, out.dt_out);
   return m;
 }
 
@@ -163,6 +166,8 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
   m.I_min = rs.I_min;
   m.I_max = rs.I_max;
   m.illposed_fraction = rs.illposed_fraction;
+  m.dt_out = schedule.dt_out;
+  m.run_command = twod_run_command(c, s, schedule.dt_out);
   return m;
 }
 

@@ -31,6 +31,8 @@ struct ModelRun {
   double I_min = 0.0, I_max = 0.0;  // 2D only: over granular cells at the end
   double illposed_fraction = 0.0;   // 2D only
   double seeded_growth_rate = 0.0;  // the theory's growth rate of the seeded mode, if seeded
+  double dt_out = 0.0;              // sampling interval of the series [s]
+  std::string run_command;          // `granbench run ...` that reproduces this run (run_command.hpp)
 };
 
 struct DepthAvgSettings {

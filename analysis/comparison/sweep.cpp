@@ -98,6 +98,7 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
   p.wall_seconds = r.wall_seconds;
   p.completed = r.outcome == RunOutcome::Completed;
   p.message = r.message;
+  p.run_command = r.run_command;
   if (!m.spectral.found())
     p.message += (p.message.empty() ? "" : "; ") + ("no growth rate: " + m.spectral.reason);
 }

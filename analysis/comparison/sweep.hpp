@@ -41,6 +41,9 @@ struct SweepPoint {
   bool completed = false;
   bool resumed = false;  // read back from an earlier run (not stored)
   std::string message;   // why a point did not complete (not stored)
+  // `granbench run ...` that reproduces a seeded point's run (run_command.hpp); empty for the
+  // depth-averaged linear runs (no `run` equivalent) and for resumed points (not stored)
+  std::string run_command;
 };
 
 struct SweepSpec {

@@ -115,7 +115,7 @@ TEST(TwodSigkill, ARunKilledAfterACheckpointRestartsIntoTheSameOutAsIfUninterrup
   EXPECT_EQ(count((dir / "run.xdmf").string(), "<Time Value="), ta.size());
 
   const auto ja = nlohmann::json::parse(full.out), jb = nlohmann::json::parse(rest.out);
-  ASSERT_FALSE(ja["growth_rate"].is_null()) << ja["growth_note"];
+  ASSERT_FALSE(ja["growth_rate"].is_null()) << ja["reason"];
   EXPECT_NEAR(ja["growth_rate"].get<double>(), jb["growth_rate"].get<double>(), 1e-12);
   fs::remove_all(dir);
 }

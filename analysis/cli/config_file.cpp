@@ -163,23 +163,26 @@ std::string toml_value(const std::string& text) {
 
 std::string effective_options_toml(const CLI::App& sub) {
   std::ostringstream out;
-  out << "# granbench " << sub.get_name() << ": effective options (read back with --config)\n";
+  out << "# granbench " << sub.get_name() << ": effective options (read back with --config).\n"
+      << "# Options left at their defaults are shown commented out: given in a file they would\n"
+      << "# count as given, and a command refuses options that do not apply to its choices.\n";
   out << "[" << sub.get_name() << "]\n";
   for (const CLI::Option* opt : sub.get_options()) {
     if (opt->get_lnames().empty()) continue;  // positional
     const std::string name = opt->get_lnames().front();
     if (reserved(name)) continue;
+    const bool given = opt->count() > 0;
     std::vector<std::string> values;
     if (opt->get_type_size() == 0) {  // a flag
-      const bool on = opt->count() > 0 && (opt->results().empty() || opt->as<bool>());
+      const bool on = given && (opt->results().empty() || opt->as<bool>());
       values.push_back(on ? "true" : "false");
-    } else if (opt->count() > 0) {
+    } else if (given) {
       values = opt->results();
     } else if (!opt->get_default_str().empty()) {
       values.push_back(opt->get_default_str());
     }
     if (values.empty()) continue;  // no value and no default (e.g. --out not given)
-    out << name << " = ";
+    out << (given ? "" : "# ") << name << " = ";
     if (values.size() == 1 && opt->get_items_expected_max() <= 1) {
       out << toml_value(values[0]) << "\n";
       continue;

@@ -107,6 +107,16 @@ TEST_F(ConfigFile, PrintConfigWritesTomlThatReadsBack) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_EQ(again.out, first.out);
   EXPECT_EQ(steady_angle("--config " + file("printed2.toml", first.out)), 25.0);
+  EXPECT_NE(first.out.find("# h0 = 0.004"), std::string::npos) << "defaults shown: " << first.out;
+  // Read back, defaults do not count as given: a sweep refuses options of the other model.
+  for (const std::string model : {"depthavg", "twod", "both"}) {
+    const auto printed = run("sweep --model " + model + " --print-config");
+    ASSERT_EQ(printed.code, 0) << printed.err;
+    const auto back =
+        run("sweep --print-config --config " + file("sweep_" + model + ".toml", printed.out));
+    EXPECT_EQ(back.code, 0) << model << ": " << back.err;
+    EXPECT_EQ(back.out, printed.out);
+  }
 }
 
 }  // namespace

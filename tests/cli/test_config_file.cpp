@@ -54,11 +54,13 @@ class ConfigFile : public ::testing::Test {
 TEST_F(ConfigFile, MalformedTomlIsRefusedNamingFileLineAndKey) {
   const auto f = file("bad.toml", "h0 = 0.004\nangle = = 30\n");
   expect_refused("steady --config " + f, {"--config", f + ":2", "'angle'"});
-  expect_refused("steady --config " + file("str.toml", "angle = \"30\n"), {"str.toml:1", "unterminated"});
+  expect_refused("steady --config " + file("str.toml", "angle = \"30\n"),
+                 {"str.toml:1", "unterminated"});
   expect_refused("steady --config " + file("hdr.toml", "[steady\n"), {"hdr.toml:1"});
   expect_refused("steady --config " + file("yaml.toml", "angle: 30\n"), {"yaml.toml:1"});
   expect_refused("steady --config " + file("json.toml", "{\"angle\": 30}\n"), {"json.toml:1"});
-  expect_refused("steady --config " + file("bare.toml", "curve = jop\n"), {"bare.toml:1", "'curve'"});
+  expect_refused("steady --config " + file("bare.toml", "curve = jop\n"),
+                 {"bare.toml:1", "'curve'"});
   expect_refused("steady --config " + file("twice.toml", "angle = 30\nangle = 25\n"),
                  {"twice.toml:2", "twice"});
   expect_refused("steady --config " + file("bin.toml", std::string("\x01\x02\xff\xfe", 4)),

@@ -59,12 +59,12 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
             std::string::npos)
       << line;
   EXPECT_NE(line.find("--out " + out), std::string::npos) << line;
-  EXPECT_TRUE(std::regex_match(text("created"),
-                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")))
+  EXPECT_TRUE(std::regex_match(text("created"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")))
       << text("created");
 
   EXPECT_FALSE(text("curve").empty());
-  for (const char* key : {"mu_s", "mu_d", "I0", "d", "phi", "rho_star", "g", "mu_inf", "alpha", "h0"})
+  for (const char* key :
+       {"mu_s", "mu_d", "I0", "d", "phi", "rho_star", "g", "mu_inf", "alpha", "h0"})
     EXPECT_TRUE(h5_has_attribute(out, "/", key)) << c.name << ": no root attribute " << key;
   if (c.has_slope) {
     EXPECT_TRUE(h5_has_attribute(out, "/", "angle_deg")) << c.name;
@@ -86,7 +86,8 @@ INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
 TEST(Version, PrintsTheVersionAndTheCommit) {
   const auto r = run_granbench("--version", "version_" + std::to_string(getpid()));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, "granbench " + granbench_version() + " (commit " + granbench_git_commit() + ")\n");
+  EXPECT_EQ(r.out,
+            "granbench " + granbench_version() + " (commit " + granbench_git_commit() + ")\n");
 }
 
 }  // namespace

@@ -47,6 +47,21 @@ TEST(SweepOutput, ASecondWriterOfTheSameOutIsRefusedNamingTheLock) {
   fs::remove_all(dir);
 }
 
+// An --out that cannot be written is refused before any point runs, with the OS's reason
+// (qa.md SW29: the whole sweep ran, then exit 1 naming an internal .partial file).
+TEST(SweepOutput, AnOutThatCannotBeWrittenIsRefusedFirst) {
+  const std::string out = "/nonexistent_granbench_dir/d/x.h5";
+  const auto r = run_granbench(
+      "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --quiet "
+      "--out " +
+          out,
+      "sweep_noout_" + std::to_string(getpid()));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("granbench: error: --out: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+}
+
 TEST(SweepOutput, AnInterruptedSweepWithPlotButNoOutDoesNotClaimToKeepItsPoints) {
   const fs::path dir = temp_dir("sweep_int");
   // A 2D point of 60 s of flow takes minutes: the SIGINT after 3 s arrives mid-point.

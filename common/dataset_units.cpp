@@ -38,7 +38,8 @@ const std::map<std::string, DatasetDoc>& by_path() {
       {"/warm_start/viscous_dt", {"s", "time step of the stored viscous increment"}},
       {"/warm_start/previous_dt", {"s", "previous time step"}},
       {"/warm_start/viscous_increment", {"m/s", "last viscous velocity increment (solver start)"}},
-      {"/warm_start/pressure_increment", {"Pa s", "last pressure increment times dt (solver start)"}},
+      {"/warm_start/pressure_increment",
+       {"Pa s", "last pressure increment times dt (solver start)"}},
       {"/warm_start/advection_u", {"m/s^2", "last downslope advection term (solver start)"}},
       {"/warm_start/advection_w", {"m/s^2", "last slope-normal advection term (solver start)"}},
   };
@@ -87,8 +88,10 @@ const std::map<std::string, DatasetDoc>& by_name() {
       {"w_im", {"1", "imaginary part of the eigenfunction w (arbitrary scale)"}},
       {"p_re", {"1", "real part of the eigenfunction p (arbitrary scale)"}},
       {"p_im", {"1", "imaginary part of the eigenfunction p (arbitrary scale)"}},
-      {"modes", {"mixed", "fitted waves, rows of (growth rate [1/s], phase speed [m/s], "
-                          "amplitude at the window start [m])"}},
+      {"modes",
+       {"mixed",
+        "fitted waves, rows of (growth rate [1/s], phase speed [m/s], "
+        "amplitude at the window start [m])"}},
       {"window_start", {"s", "start of the fit window"}},
       {"window_end", {"s", "end of the fit window"}},
       {"fit_r2", {"1", "R^2 of the fit of ln|h_k| over the window"}},

@@ -22,8 +22,8 @@ void check(herr_t status, const std::string& what) {
 
 std::vector<hsize_t> shape(std::size_t n, const std::vector<std::size_t>& dims) {
   if (dims.empty()) return {static_cast<hsize_t>(n)};
-  std::size_t total = std::accumulate(dims.begin(), dims.end(), std::size_t{1},
-                                      std::multiplies<>());
+  std::size_t total =
+      std::accumulate(dims.begin(), dims.end(), std::size_t{1}, std::multiplies<>());
   if (total != n) throw std::invalid_argument("HDF5: dataset dims do not match the data size");
   return {dims.begin(), dims.end()};
 }
@@ -157,15 +157,23 @@ void write_surface_series(H5Writer& out, const std::string& group, const Surface
   out.attribute(group, "h0", s.h0);
 }
 
-void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m,
-                       double angle_deg, double h0) {
+void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m, double angle_deg,
+                       double h0) {
   out.attribute("/", "curve", curve);
   if (!std::isnan(angle_deg)) out.attribute("/", "angle_deg", angle_deg);
   if (!std::isnan(h0)) out.attribute("/", "h0", h0);
-  for (const auto& [key, v] :
-       {std::pair{"mu_s", m.mu_s}, {"mu_d", m.mu_d}, {"I0", m.I0}, {"d", m.d}, {"phi", m.phi},
-        {"rho_star", m.rho_star}, {"g", m.g}, {"mu_inf", m.mu_inf}, {"alpha", m.alpha},
-        {"kk_mu0", m.kk_mu0}, {"kk_cK", m.kk_cK}, {"hm_c", m.hm_c}})
+  for (const auto& [key, v] : {std::pair{"mu_s", m.mu_s},
+                               {"mu_d", m.mu_d},
+                               {"I0", m.I0},
+                               {"d", m.d},
+                               {"phi", m.phi},
+                               {"rho_star", m.rho_star},
+                               {"g", m.g},
+                               {"mu_inf", m.mu_inf},
+                               {"alpha", m.alpha},
+                               {"kk_mu0", m.kk_mu0},
+                               {"kk_cK", m.kk_cK},
+                               {"hm_c", m.hm_c}})
     out.attribute("/", key, v);
 }
 

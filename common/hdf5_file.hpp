@@ -48,8 +48,8 @@ class H5Writer {
 void write_surface_series(H5Writer& out, const std::string& group, const SurfaceSeries& s);
 // The inputs of a flow as root attributes: curve, the material constants (material.hpp's names),
 // and, where the output has them, angle_deg and h0 (NaN: not written).
-void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m,
-                       double angle_deg, double h0);
+void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m, double angle_deg,
+                       double h0);
 
 // Reading back (tests, resumable sweeps, plots-free analysis).
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,

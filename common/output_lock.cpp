@@ -32,7 +32,8 @@ OutputLock::OutputLock(const std::string& output_path) : lock_path_(output_path 
                        (holder.empty() ? "" : " (pid " + holder + ")"));
       throw std::runtime_error("cannot lock " + lock_path_ + ": " + std::strerror(err));
     }
-    struct stat at_path {}, locked {};
+    struct stat at_path {
+    }, locked{};
     if (::stat(lock_path_.c_str(), &at_path) == 0 && ::fstat(fd_, &locked) == 0 &&
         at_path.st_ino == locked.st_ino && at_path.st_dev == locked.st_dev)
       break;

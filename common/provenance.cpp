@@ -23,9 +23,13 @@ std::string shell_quoted(const std::string& word) {
 }
 }  // namespace
 
-std::string granbench_version() { return GRANBENCH_VERSION; }
+std::string granbench_version() {
+  return GRANBENCH_VERSION;
+}
 
-std::string granbench_git_commit() { return GRANBENCH_GIT_COMMIT; }
+std::string granbench_git_commit() {
+  return GRANBENCH_GIT_COMMIT;
+}
 
 std::string process_command_line() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);

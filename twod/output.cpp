@@ -142,8 +142,8 @@ void SnapshotWriter::finish() const {
       x << "   <Grid Name=\"t" << n << "\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << times_[n] << "\"/>\n"
         << "    <Topology TopologyType=\"2DSMesh\" Dimensions=\"" << nodes << "\"/>\n"
-        << "    <Geometry GeometryType=\"XY\">\n     "
-        << item(nodes + " 2", "/snapshots/xz_nodes") << "\n    </Geometry>\n";
+        << "    <Geometry GeometryType=\"XY\">\n     " << item(nodes + " 2", "/snapshots/xz_nodes")
+        << "\n    </Geometry>\n";
       for (const char* f : {"u", "w", "p", "f", "I", "eta", "C"})
         x << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n     "
           << item(cells, std::string(grp) + "/" + f) << "\n    </Attribute>\n";
@@ -159,12 +159,23 @@ void SnapshotWriter::finish() const {
 std::string xml_escaped(const std::string& text) {
   std::string e;
   for (char c : text) switch (c) {
-      case '&': e += "&amp;"; break;
-      case '<': e += "&lt;"; break;
-      case '>': e += "&gt;"; break;
-      case '"': e += "&quot;"; break;
-      case '\'': e += "&apos;"; break;
-      default: e += c;
+      case '&':
+        e += "&amp;";
+        break;
+      case '<':
+        e += "&lt;";
+        break;
+      case '>':
+        e += "&gt;";
+        break;
+      case '"':
+        e += "&quot;";
+        break;
+      case '\'':
+        e += "&apos;";
+        break;
+      default:
+        e += c;
     }
   return e;
 }
@@ -174,10 +185,11 @@ void check_xdmf_file_name(const std::string& name) {
   // "name:path" is how XDMF addresses a dataset, so a ':' would split the name.
   const auto bad = name.find_first_of(" \t\n\r\v\f:");
   if (bad != std::string::npos)
-    throw std::invalid_argument("--out: '" + name + "' has " +
-                                (name[bad] == ':' ? std::string("a ':'") : std::string("white space")) +
-                                ", which ParaView's XDMF readers cannot open; valid: a file name "
-                                "without spaces or ':'");
+    throw std::invalid_argument(
+        "--out: '" + name + "' has " +
+        (name[bad] == ':' ? std::string("a ':'") : std::string("white space")) +
+        ", which ParaView's XDMF readers cannot open; valid: a file name "
+        "without spaces or ':'");
 }
 
 }  // namespace granbench::twod

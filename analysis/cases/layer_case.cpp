@@ -212,6 +212,14 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec, const 
   out.attribute("/", "h0", spec.h0);
   out.attribute("/", "angle0", spec.angle0_deg);
   out.attribute("/", "angle", spec.angle_deg);
+  // The inputs on the root as in every granbench file: the case's curves, its material (one for
+  // all runs), slope and depth.
+  if (!spec.runs.empty()) {
+    std::string curves;
+    for (const auto& c : spec.curves) curves += (curves.empty() ? "" : ",") + c;
+    write_flow_inputs(out, curves, spec.runs.front().params.rheology.material, spec.angle_deg,
+                      spec.h0);
+  }
   out.attribute("/", "results_json", r.summary.dump());
   out.create_group("/runs");
   if (!r.grid_dependence.empty()) out.create_group("/grid_dependence");

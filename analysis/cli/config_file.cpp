@@ -92,9 +92,8 @@ ExpandedArgs expand_config_files(const std::vector<std::string>& args, const CLI
     const auto where = [&](int line) { return file + ":" + std::to_string(line); };
     for (const TomlTable& t : doc.tables) {
       const bool known = t.path.size() == 1 &&
-                         std::any_of(subs.begin(), subs.end(), [&](const CLI::App* s) {
-                           return s->get_name() == t.path[0];
-                         });
+                         std::any_of(subs.begin(), subs.end(),
+                                     [&](const CLI::App* s) { return s->get_name() == t.path[0]; });
       if (!known) {
         std::string joined;
         for (const auto& p : t.path) joined += (joined.empty() ? "" : ".") + p;
@@ -106,8 +105,9 @@ ExpandedArgs expand_config_files(const std::vector<std::string>& args, const CLI
       for (const TomlEntry& e : doc.entries) {
         if (e.table.empty() == section_pass) continue;
         if (e.table.size() > 1)
-          throw UsageError("--config: " + where(e.line) + ": key '" + e.key +
-                           "' is nested too deep; valid: top-level keys or keys of a [<subcommand>] section");
+          throw UsageError(
+              "--config: " + where(e.line) + ": key '" + e.key +
+              "' is nested too deep; valid: top-level keys or keys of a [<subcommand>] section");
         const CLI::App* owner = nullptr;
         if (!e.table.empty()) {
           for (const CLI::App* s : subs)
@@ -116,13 +116,13 @@ ExpandedArgs expand_config_files(const std::vector<std::string>& args, const CLI
             throw UsageError("--config: " + where(e.line) + ": unknown section [" + e.table[0] +
                              "]; valid sections " + subcommand_list(app));
           if (!has_option(*owner, e.key))
-            throw UsageError("--config: " + where(e.line) + ": unknown key '" + e.key +
-                             "' in [" + e.table[0] + "]; valid: the long options of granbench " +
-                             e.table[0] + " without '--' (see granbench " + e.table[0] + " --help)");
+            throw UsageError("--config: " + where(e.line) + ": unknown key '" + e.key + "' in [" +
+                             e.table[0] + "]; valid: the long options of granbench " + e.table[0] +
+                             " without '--' (see granbench " + e.table[0] + " --help)");
           if (owner != sub) continue;  // another subcommand's section
         } else {
-          const bool anywhere = std::any_of(subs.begin(), subs.end(),
-                                            [&](const CLI::App* s) { return has_option(*s, e.key); });
+          const bool anywhere = std::any_of(
+              subs.begin(), subs.end(), [&](const CLI::App* s) { return has_option(*s, e.key); });
           if (!anywhere)
             throw UsageError("--config: " + where(e.line) + ": unknown key '" + e.key +
                              "'; valid: the long options of a subcommand without '--'");
@@ -145,7 +145,8 @@ ExpandedArgs expand_config_files(const std::vector<std::string>& args, const CLI
 namespace {
 
 std::string toml_value(const std::string& text) {
-  static const std::regex number(R"([+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?|[+-]?(inf|nan))");
+  static const std::regex number(
+      R"([+-]?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?|[+-]?(inf|nan))");
   if (std::regex_match(text, number) || text == "true" || text == "false") return text;
   std::string q = "\"";
   for (char c : text) {
@@ -163,23 +164,26 @@ std::string toml_value(const std::string& text) {
 
 std::string effective_options_toml(const CLI::App& sub) {
   std::ostringstream out;
-  out << "# granbench " << sub.get_name() << ": effective options (read back with --config)\n";
+  out << "# granbench " << sub.get_name() << ": effective options (read back with --config).\n"
+      << "# Options left at their defaults are shown commented out: given in a file they would\n"
+      << "# count as given, and a command refuses options that do not apply to its choices.\n";
   out << "[" << sub.get_name() << "]\n";
   for (const CLI::Option* opt : sub.get_options()) {
     if (opt->get_lnames().empty()) continue;  // positional
     const std::string name = opt->get_lnames().front();
     if (reserved(name)) continue;
+    const bool given = opt->count() > 0;
     std::vector<std::string> values;
     if (opt->get_type_size() == 0) {  // a flag
-      const bool on = opt->count() > 0 && (opt->results().empty() || opt->as<bool>());
+      const bool on = given && (opt->results().empty() || opt->as<bool>());
       values.push_back(on ? "true" : "false");
-    } else if (opt->count() > 0) {
+    } else if (given) {
       values = opt->results();
     } else if (!opt->get_default_str().empty()) {
       values.push_back(opt->get_default_str());
     }
     if (values.empty()) continue;  // no value and no default (e.g. --out not given)
-    out << name << " = ";
+    out << (given ? "" : "# ") << name << " = ";
     if (values.size() == 1 && opt->get_items_expected_max() <= 1) {
       out << toml_value(values[0]) << "\n";
       continue;

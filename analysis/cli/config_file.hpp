@@ -8,7 +8,7 @@
 // the file, the line and the key.
 //
 // --print-config writes the effective options of the subcommand as TOML (a [<subcommand>]
-// table that --config reads back) instead of running it.
+// table that --config reads back; defaults as comments) instead of running it.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -29,7 +29,7 @@ struct ExpandedArgs {
 // naming --config for an unreadable file and for every error in one.
 ExpandedArgs expand_config_files(const std::vector<std::string>& args, const CLI::App& app);
 
-// The options of a parsed subcommand as TOML: given values, else the defaults it shows.
+// The options of a parsed subcommand as TOML: the given values as keys, the defaults as comments.
 std::string effective_options_toml(const CLI::App& sub);
 
 }  // namespace granbench::cli

@@ -49,6 +49,11 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
       kept = {0.0};
       s.refused = std::string(e.what()) + ": another sweep is writing " + spec.out +
                   "; wait for it to finish or choose another --out";
+    } catch (const std::runtime_error& e) {
+      // No lock file where --out goes (a missing directory, no permission), or a stored file that
+      // cannot be read: refused before any point runs, and on every rank alike.
+      kept = {0.0};
+      s.refused = e.what();
     }
   kept = mpi.broadcast(kept);
   if (kept[0] == 0.0) return s;
@@ -190,8 +195,9 @@ void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohma
   const std::size_t expected = spec.Lx.size() * ((spec.depthavg ? 1 : 0) + (spec.twod ? 1 : 0));
   // Without --out the points lived in a scratch file for the figure, removed above: nothing is
   // kept for a resume, and the message must not say otherwise.
-  const std::string kept = keep_data ? " kept in " + spec.out + "; run the same command again to resume"
-                                     : "; nothing is kept (give --out FILE to keep the points for a resume)";
+  const std::string kept =
+      keep_data ? " kept in " + spec.out + "; run the same command again to resume"
+                : "; nothing is kept (give --out FILE to keep the points for a resume)";
   if (finished < expected && s.interrupted)
     throw CommandFailed("interrupted with " + std::to_string(finished) + " of " +
                             std::to_string(expected) + " points" + kept,

@@ -29,7 +29,7 @@ struct SweepOptions {
   double tolerance = 1e-6;
   double t_end = 0.0;
   std::string resolution = "default";  // 2D grid of --model twod|both (32 cells per h0)
-  int viscosity_passes = 1;           // of --model twod|both
+  int viscosity_passes = 1;            // of --model twod|both
 };
 
 // Registers the options on `app` (the sweep subcommand).

@@ -39,7 +39,8 @@ class Parser {
         if (peek() != ']') fail("expected ']' to close the table header");
         next();
         end_of_line();
-        if (!declared_.insert(join(table)).second) fail("table [" + join(table) + "] declared twice");
+        if (!declared_.insert(join(table)).second)
+          fail("table [" + join(table) + "] declared twice");
         doc.tables.push_back({table, line});
         continue;
       }
@@ -157,14 +158,29 @@ class Parser {
       }
       const char e = at_end() ? '\0' : next();
       switch (e) {
-        case '"': v += '"'; break;
-        case '\\': v += '\\'; break;
-        case 'n': v += '\n'; break;
-        case 't': v += '\t'; break;
-        case 'r': v += '\r'; break;
-        case 'b': v += '\b'; break;
-        case 'f': v += '\f'; break;
-        default: fail(std::string("unknown escape '\\") + e + "' in a string");
+        case '"':
+          v += '"';
+          break;
+        case '\\':
+          v += '\\';
+          break;
+        case 'n':
+          v += '\n';
+          break;
+        case 't':
+          v += '\t';
+          break;
+        case 'r':
+          v += '\r';
+          break;
+        case 'b':
+          v += '\b';
+          break;
+        case 'f':
+          v += '\f';
+          break;
+        default:
+          fail(std::string("unknown escape '\\") + e + "' in a string");
       }
     }
   }
@@ -237,7 +253,8 @@ class Parser {
     const auto bad = [&] {
       fail("'" + word + "' is not a TOML value (strings need quotes: \"" + word + "\")");
     };
-    if (body.size() > 2 && body[0] == '0' && std::string("xob").find(body[1]) != std::string::npos) {
+    if (body.size() > 2 && body[0] == '0' &&
+        std::string("xob").find(body[1]) != std::string::npos) {
       if (!sign.empty() || word[0] == '+') bad();
       const int base = body[1] == 'x' ? 16 : body[1] == 'o' ? 8 : 2;
       const std::string digits = strip_underscores(body.substr(2), bad);
@@ -283,7 +300,8 @@ class Parser {
         continue;
       }
       // '_' only between two digits
-      if (k == 0 || k + 1 == text.size() || !std::isxdigit(static_cast<unsigned char>(text[k - 1])) ||
+      if (k == 0 || k + 1 == text.size() ||
+          !std::isxdigit(static_cast<unsigned char>(text[k - 1])) ||
           !std::isxdigit(static_cast<unsigned char>(text[k + 1])))
         bad();
     }

@@ -54,11 +54,13 @@ class ConfigFile : public ::testing::Test {
 TEST_F(ConfigFile, MalformedTomlIsRefusedNamingFileLineAndKey) {
   const auto f = file("bad.toml", "h0 = 0.004\nangle = = 30\n");
   expect_refused("steady --config " + f, {"--config", f + ":2", "'angle'"});
-  expect_refused("steady --config " + file("str.toml", "angle = \"30\n"), {"str.toml:1", "unterminated"});
+  expect_refused("steady --config " + file("str.toml", "angle = \"30\n"),
+                 {"str.toml:1", "unterminated"});
   expect_refused("steady --config " + file("hdr.toml", "[steady\n"), {"hdr.toml:1"});
   expect_refused("steady --config " + file("yaml.toml", "angle: 30\n"), {"yaml.toml:1"});
   expect_refused("steady --config " + file("json.toml", "{\"angle\": 30}\n"), {"json.toml:1"});
-  expect_refused("steady --config " + file("bare.toml", "curve = jop\n"), {"bare.toml:1", "'curve'"});
+  expect_refused("steady --config " + file("bare.toml", "curve = jop\n"),
+                 {"bare.toml:1", "'curve'"});
   expect_refused("steady --config " + file("twice.toml", "angle = 30\nangle = 25\n"),
                  {"twice.toml:2", "twice"});
   expect_refused("steady --config " + file("bin.toml", std::string("\x01\x02\xff\xfe", 4)),
@@ -107,6 +109,16 @@ TEST_F(ConfigFile, PrintConfigWritesTomlThatReadsBack) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_EQ(again.out, first.out);
   EXPECT_EQ(steady_angle("--config " + file("printed2.toml", first.out)), 25.0);
+  EXPECT_NE(first.out.find("# h0 = 0.004"), std::string::npos) << "defaults shown: " << first.out;
+  // Read back, defaults do not count as given: a sweep refuses options of the other model.
+  for (const std::string model : {"depthavg", "twod", "both"}) {
+    const auto printed = run("sweep --model " + model + " --print-config");
+    ASSERT_EQ(printed.code, 0) << printed.err;
+    const auto back =
+        run("sweep --print-config --config " + file("sweep_" + model + ".toml", printed.out));
+    EXPECT_EQ(back.code, 0) << model << ": " << back.err;
+    EXPECT_EQ(back.out, printed.out);
+  }
 }
 
 }  // namespace

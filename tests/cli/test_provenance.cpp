@@ -23,8 +23,9 @@ using namespace granbench;
 
 struct Case {
   const char* name;
-  const char* args;  // --out FILE is appended
+  const char* args;  // --out FILE is appended, or --out-dir DIR where `file` names the output
   bool has_slope;
+  const char* file = nullptr;
 };
 
 const Case kCases[] = {
@@ -36,6 +37,7 @@ const Case kCases[] = {
     {"run_twod", "run --model twod --nx 40 --nz 16 --t-end 0.02", true},
     {"sweep", "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1", true},
     {"compare", "compare --nx 40 --nz 16 --nx-depthavg 40 --t-end 0.05", true},
+    {"case_layer", "case decelerating --resolution smoke", true, "decelerating.h5"},
 };
 
 class Provenance : public ::testing::TestWithParam<Case> {};
@@ -44,9 +46,10 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
   const Case& c = GetParam();
   const fs::path dir = fs::temp_directory_path() / ("gb_prov_" + std::to_string(getpid()));
   fs::create_directories(dir);
-  const std::string out = (dir / (std::string(c.name) + ".h5")).string();
-  const auto r = run_granbench(std::string(c.args) + " --quiet --json --out " + out,
-                               "prov_" + std::to_string(getpid()));
+  const std::string out = (dir / (c.file ? c.file : std::string(c.name) + ".h5")).string();
+  const std::string where = c.file ? " --out-dir " + dir.string() : " --quiet --out " + out;
+  const auto r =
+      run_granbench(std::string(c.args) + " --json" + where, "prov_" + std::to_string(getpid()));
   ASSERT_EQ(r.code, 0) << c.args << "\n" << r.err;
   ASSERT_TRUE(fs::exists(out));
 
@@ -58,13 +61,14 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
   EXPECT_NE(line.find(std::string(c.args).substr(0, std::string(c.args).find(' '))),
             std::string::npos)
       << line;
-  EXPECT_NE(line.find("--out " + out), std::string::npos) << line;
-  EXPECT_TRUE(std::regex_match(text("created"),
-                               std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")))
+  EXPECT_NE(line.find(c.file ? "--out-dir " + dir.string() : "--out " + out), std::string::npos)
+      << line;
+  EXPECT_TRUE(std::regex_match(text("created"), std::regex(R"(\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ)")))
       << text("created");
 
   EXPECT_FALSE(text("curve").empty());
-  for (const char* key : {"mu_s", "mu_d", "I0", "d", "phi", "rho_star", "g", "mu_inf", "alpha", "h0"})
+  for (const char* key :
+       {"mu_s", "mu_d", "I0", "d", "phi", "rho_star", "g", "mu_inf", "alpha", "h0"})
     EXPECT_TRUE(h5_has_attribute(out, "/", key)) << c.name << ": no root attribute " << key;
   if (c.has_slope) {
     EXPECT_TRUE(h5_has_attribute(out, "/", "angle_deg")) << c.name;
@@ -86,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
 TEST(Version, PrintsTheVersionAndTheCommit) {
   const auto r = run_granbench("--version", "version_" + std::to_string(getpid()));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, "granbench " + granbench_version() + " (commit " + granbench_git_commit() + ")\n");
+  EXPECT_EQ(r.out,
+            "granbench " + granbench_version() + " (commit " + granbench_git_commit() + ")\n");
 }
 
 }  // namespace

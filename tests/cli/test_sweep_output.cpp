@@ -38,22 +38,38 @@ TEST(SweepOutput, ASecondWriterOfTheSameOutIsRefusedNamingTheLock) {
     EXPECT_FALSE(fs::exists(out)) << "the refused sweep wrote the file";
   }
   // Released: the same command now runs, and leaves no lock file behind.
-  const auto again = run_granbench(
-      "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --json --out " + out,
-      "sweep_lock_" + std::to_string(getpid()));
+  const auto again =
+      run_granbench("sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --json --out " + out,
+                    "sweep_lock_" + std::to_string(getpid()));
   EXPECT_EQ(again.code, 0) << again.err;
   EXPECT_TRUE(fs::exists(out));
   EXPECT_FALSE(fs::exists(out + ".lock"));
   fs::remove_all(dir);
 }
 
+// An --out that cannot be written is refused before any point runs, with the OS's reason
+// (qa.md SW29: the whole sweep ran, then exit 1 naming an internal .partial file).
+TEST(SweepOutput, AnOutThatCannotBeWrittenIsRefusedFirst) {
+  const std::string out = "/nonexistent_granbench_dir/d/x.h5";
+  const auto r = run_granbench(
+      "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --quiet "
+      "--out " +
+          out,
+      "sweep_noout_" + std::to_string(getpid()));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("granbench: error: --out: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+}
+
 TEST(SweepOutput, AnInterruptedSweepWithPlotButNoOutDoesNotClaimToKeepItsPoints) {
   const fs::path dir = temp_dir("sweep_int");
   // A 2D point of 60 s of flow takes minutes: the SIGINT after 3 s arrives mid-point.
-  const auto r = run_granbench("sweep --model twod --resolution coarse --Lx 0.08:0.08:1 --t-end 60"
-                               " --jobs 1 --quiet --plot sweep.png",
-                               "sweep_int_" + std::to_string(getpid()),
-                               "cd " + dir.string() + " && timeout --preserve-status -s INT 3 ");
+  const auto r = run_granbench(
+      "sweep --model twod --resolution coarse --Lx 0.08:0.08:1 --t-end 60"
+      " --jobs 1 --quiet --plot sweep.png",
+      "sweep_int_" + std::to_string(getpid()),
+      "cd " + dir.string() + " && timeout --preserve-status -s INT 3 ");
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("run the same command again"), std::string::npos) << r.err;

@@ -6,7 +6,6 @@
 // refused as not applying to that model; only the options listed in
 // sweep_options_without_effect_on_results() are exempt.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>

@@ -21,7 +21,8 @@ namespace {
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
 
-const std::string kRun = "run --model twod --nx 40 --nz 16 --t-end 0.02 --dt-snapshot 0.01 --quiet --out ";
+const std::string kRun =
+    "run --model twod --nx 40 --nz 16 --t-end 0.02 --dt-snapshot 0.01 --quiet --out ";
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);
@@ -48,7 +49,8 @@ TEST_F(XdmfOutput, StructuredMeshVelocityVectorAndExactTimes) {
   const std::string x = read(dir_ / "run.xdmf");
   EXPECT_EQ(x.find("2DRectMesh"), std::string::npos);
   EXPECT_EQ(x.find("VXVY"), std::string::npos);
-  EXPECT_NE(x.find("<Topology TopologyType=\"2DSMesh\" Dimensions=\"17 41\"/>"), std::string::npos) << x;
+  EXPECT_NE(x.find("<Topology TopologyType=\"2DSMesh\" Dimensions=\"17 41\"/>"), std::string::npos)
+      << x;
   EXPECT_NE(x.find("<Geometry GeometryType=\"XY\">"), std::string::npos);
   EXPECT_NE(x.find("Dimensions=\"17 41 2\""), std::string::npos);
   EXPECT_NE(x.find("<Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Cell\">"),

@@ -1,5 +1,5 @@
 // A 2D linear eigenmode in physical units, evaluated anywhere in the layer: the perturbation that
-// seeds a 2D run with one clean mode (issue 5, item 3), and the profiles written to output.
+// seeds a 2D run with one clean mode, and the profiles written to output.
 //
 // With surface h(x, t) = h0 + Re(a exp(i k x + lambda t)) (a real: h = h0 + a cos(k x) at t = 0),
 // the fields are u = U0(z) + Re(a u_hat(z) e^{ikx}), w = Re(a w_hat(z) e^{ikx}),

@@ -1,19 +1,33 @@
 // Benchmark of the 2D solver on the §7 rollwave case (not a test): Lx = 0.08 m, zeta = 28.5 deg,
 // h0 = 4 mm, a0 = 0.2 mm, Lz = 2 h0, regularised curve, at 256 x 64 and 512 x 128 cells.
-// Prints, per grid, the steps, wall and CPU seconds, cell updates per second (cells x steps /
-// wall), the mean linear-solver iterations, the mass error, and the wall time a 10 s run would
-// take at the measured rate.
+// Prints, per grid, the thread count, the steps, wall and CPU seconds, cell updates per second
+// (cells x steps / wall, and per CPU second), the mean linear-solver iterations, the mass error,
+// and the wall time a 10 s run would take at the measured rate. Before the runs, a STREAM-like
+// triad a = b + s c over three 32 MiB arrays (far larger than the caches) measures the memory
+// bandwidth with the same thread count, the reference for the cell-update rate: the solver's
+// loops are memory bound, so bandwidth / (cell updates per second) is the bytes it moves per
+// cell update.
 //
 //   bench_twod_rollwave                 256x64 to t = 1 s, 512x128 to t = 0.05 s
-//   bench_twod_rollwave T1 T2           the two end times [s]
+//   bench_twod_rollwave T1 T2           the two end times [s] (0 skips a grid)
+//   bench_twod_rollwave T1 T2 1,2       each grid once per thread count, back to back
+// Without the third argument the thread count is OpenMP's default (OMP_NUM_THREADS or all
+// cores). The results are identical for every thread count (twod/parallel.hpp); only the times
+// differ. Timing on a loaded machine is meaningless: check `uptime` first.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "diagnostics.hpp"
 #include "initial_state.hpp"
+#include "parallel.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 
@@ -21,9 +35,44 @@ using namespace granbench;
 using namespace granbench::twod;
 
 namespace {
-nlohmann::json run(int nx, int nz, double t_end) {
+
+// STREAM triad a_i = b_i + s c_i on `threads` std::threads, each on its own contiguous part
+// (first touched by that thread). Best of 10 repetitions; bytes counted as STREAM does (3 x 8
+// per entry: two reads, one write). Returns GB/s (1e9 bytes).
+double triad_bandwidth(int threads) {
+  const std::size_t n = std::size_t(4) << 20;  // 4 Mi doubles = 32 MiB per array
+  std::vector<double> a(n), b(n), c(n);
+  auto parallel = [&](auto&& body) {
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t)
+      pool.emplace_back([&, t] { body(n * t / threads, n * (t + 1) / threads); });
+    for (auto& th : pool) th.join();
+  };
+  parallel([&](std::size_t lo, std::size_t hi) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      a[i] = 0.0;
+      b[i] = 1.0 + 1e-9 * double(i);
+      c[i] = 2.0;
+    }
+  });
+  const double s = 3.0;
+  double best = 1e30;
+  for (int rep = 0; rep < 10; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    parallel([&](std::size_t lo, std::size_t hi) {
+      for (std::size_t i = lo; i < hi; ++i) a[i] = b[i] + s * c[i];
+    });
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  volatile double sink = a[n / 2];  // keep the stores
+  (void)sink;
+  return 3.0 * 8.0 * double(n) / best / 1e9;
+}
+
+nlohmann::json run(int nx, int nz, double t_end, int threads) {
   SolverParams params;
   params.zeta = degrees_to_radians(28.5);
+  params.threads = threads;
   const double h0 = 4e-3, Lx = 0.08, a0 = 2e-4;
   const MuCurve curve(CurveKind::Regularised, params.rheology.material, h0);
   const SteadyState steady = steady_state(curve, params.zeta, h0);
@@ -36,7 +85,8 @@ nlohmann::json run(int nx, int nz, double t_end) {
   const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
   const RunStatistics st = solver.statistics();
   const double updates = double(st.steps) * double(g.cells());
-  return {{"nx", nx},
+  return {{"threads", threads},
+          {"nx", nx},
           {"nz", nz},
           {"t_end", t_end},
           {"steps", st.steps},
@@ -56,12 +106,40 @@ nlohmann::json run(int nx, int nz, double t_end) {
 int main(int argc, char** argv) {
   const double t1 = argc > 1 ? std::atof(argv[1]) : 1.0;
   const double t2 = argc > 2 ? std::atof(argv[2]) : 0.05;
+  std::vector<int> thread_counts;
+  if (argc > 3) {
+    std::stringstream list(argv[3]);
+    for (std::string item; std::getline(list, item, ',');) {
+      const int n = std::atoi(item.c_str());
+      if (n < 1) {
+        std::cerr << "bench_twod_rollwave: thread counts must be integers >= 1\n";
+        return 2;
+      }
+      thread_counts.push_back(n);
+    }
+  } else {
+    thread_counts.push_back(thread_count());
+  }
   nlohmann::json out = {{"case", "rollwave Lx=0.08 zeta=28.5 h0=4mm a0=0.2mm Lz=2h0 regularised"},
+                        {"hardware_threads", std::thread::hardware_concurrency()},
+                        {"triad_bandwidth_GB_per_s", nlohmann::json::object()},
                         {"runs", nlohmann::json::array()}};
+  for (int threads : thread_counts) {
+    const double bw = triad_bandwidth(threads);
+    out["triad_bandwidth_GB_per_s"][std::to_string(threads)] = bw;
+    std::cerr << "threads " << threads << ": triad bandwidth " << bw << " GB/s\n";
+  }
   for (auto [nx, nz, t] : {std::tuple{256, 64, t1}, std::tuple{512, 128, t2}}) {
     if (t <= 0.0) continue;
-    out["runs"].push_back(run(nx, nz, t));
-    std::cerr << out["runs"].back().dump() << "\n";
+    for (int threads : thread_counts) {
+      nlohmann::json r = run(nx, nz, t, threads);
+      const double bw = out["triad_bandwidth_GB_per_s"][std::to_string(threads)];
+      r["triad_bandwidth_GB_per_s"] = bw;
+      r["bytes_per_cell_update_at_triad_bandwidth"] =
+          bw * 1e9 / r["cell_updates_per_second"].get<double>();
+      out["runs"].push_back(r);
+      std::cerr << "threads " << threads << ": " << r.dump() << "\n";
+    }
   }
   std::cout << out.dump(2) << "\n";
 }

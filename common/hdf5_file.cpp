@@ -3,10 +3,14 @@
 
 #include <hdf5.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
 #include <stdexcept>
+
+#include "dataset_units.hpp"
+#include "provenance.hpp"
 
 namespace granbench {
 
@@ -41,6 +45,24 @@ void write_dataset(hid_t file, const std::string& name, std::span<const T> data,
   H5Dclose(set);
   H5Sclose(space);
   check(st, "write " + name);
+}
+
+// H5Ovisit callback: collects the paths of the datasets.
+herr_t collect_dataset(hid_t, const char* name, const H5O_info_t* info, void* paths) {
+  if (info->type == H5O_TYPE_DATASET)
+    static_cast<std::vector<std::string>*>(paths)->push_back(std::string("/") + name);
+  return 0;
+}
+
+std::vector<std::string> dataset_paths(hid_t file) {
+  std::vector<std::string> paths;
+  check(H5Ovisit2(file, H5_INDEX_NAME, H5_ITER_NATIVE, collect_dataset, &paths, H5O_INFO_BASIC),
+        "list the datasets");
+  return paths;
+}
+
+bool has_attribute(hid_t file, const std::string& object, const std::string& key) {
+  return H5Aexists_by_name(file, object.c_str(), key.c_str(), H5P_DEFAULT) > 0;
 }
 
 }  // namespace
@@ -109,6 +131,16 @@ void H5Writer::attribute(const std::string& object, const std::string& key,
 
 void H5Writer::close() {
   if (closed_) return;
+  attribute("/", "granbench_version", granbench_version());
+  attribute("/", "git_commit", granbench_git_commit());
+  attribute("/", "command_line", process_command_line());
+  attribute("/", "created", utc_timestamp_now());
+  for (const std::string& set : dataset_paths(file_)) {
+    const auto doc = dataset_doc(set);
+    if (!doc) continue;  // unknown to the table: tests/common/test_provenance.cpp finds it
+    if (!has_attribute(file_, set, "units")) attribute(set, "units", doc->units);
+    if (!has_attribute(file_, set, "long_name")) attribute(set, "long_name", doc->long_name);
+  }
   check(H5Fclose(file_), "close " + partial_);
   file_ = -1;
   std::filesystem::rename(partial_, path_);
@@ -123,6 +155,18 @@ void write_surface_series(H5Writer& out, const std::string& group, const Surface
   if (!s.u_mean.empty()) out.write(group + "/u_mean", s.u_mean, {s.nt(), s.nx()});
   out.attribute(group, "Lx", s.Lx);
   out.attribute(group, "h0", s.h0);
+}
+
+void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m,
+                       double angle_deg, double h0) {
+  out.attribute("/", "curve", curve);
+  if (!std::isnan(angle_deg)) out.attribute("/", "angle_deg", angle_deg);
+  if (!std::isnan(h0)) out.attribute("/", "h0", h0);
+  for (const auto& [key, v] :
+       {std::pair{"mu_s", m.mu_s}, {"mu_d", m.mu_d}, {"I0", m.I0}, {"d", m.d}, {"phi", m.phi},
+        {"rho_star", m.rho_star}, {"g", m.g}, {"mu_inf", m.mu_inf}, {"alpha", m.alpha},
+        {"kk_mu0", m.kk_mu0}, {"kk_cK", m.kk_cK}, {"hm_c", m.hm_c}})
+    out.attribute("/", key, v);
 }
 
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
@@ -158,6 +202,72 @@ bool h5_has(const std::string& path, const std::string& name) {
   const bool has = H5Lexists(file, name.c_str(), H5P_DEFAULT) > 0;
   H5Fclose(file);
   return has;
+}
+
+namespace {
+// The file opened read-only for one look; closed when it goes out of scope.
+struct ReadOnlyFile {
+  hid_t id;
+  explicit ReadOnlyFile(const std::string& path) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0) throw std::runtime_error("cannot open HDF5 file " + path);
+  }
+  ~ReadOnlyFile() { H5Fclose(id); }
+  ReadOnlyFile(const ReadOnlyFile&) = delete;
+  ReadOnlyFile& operator=(const ReadOnlyFile&) = delete;
+};
+
+hid_t open_attribute(const ReadOnlyFile& f, const std::string& path, const std::string& object,
+                     const std::string& key) {
+  const hid_t attr = H5Aopen_by_name(f.id, object.c_str(), key.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  if (attr < 0) throw std::runtime_error("no attribute " + key + " on " + object + " in " + path);
+  return attr;
+}
+}  // namespace
+
+std::string h5_read_string_attribute(const std::string& path, const std::string& object,
+                                     const std::string& key) {
+  const ReadOnlyFile f(path);
+  const hid_t attr = open_attribute(f, path, object, key);
+  const hid_t type = H5Aget_type(attr);
+  std::string value;
+  herr_t st = -1;
+  if (H5Tget_class(type) == H5T_STRING && !H5Tis_variable_str(type)) {
+    value.assign(H5Tget_size(type), '\0');
+    st = H5Aread(attr, type, value.data());
+    value.resize(value.find('\0') == std::string::npos ? value.size() : value.find('\0'));
+  }
+  H5Tclose(type);
+  H5Aclose(attr);
+  check(st, "read the string attribute " + key + " on " + object);
+  return value;
+}
+
+double h5_read_double_attribute(const std::string& path, const std::string& object,
+                                const std::string& key) {
+  const ReadOnlyFile f(path);
+  const hid_t attr = open_attribute(f, path, object, key);
+  double v = 0.0;
+  const herr_t st = H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+  H5Aclose(attr);
+  check(st, "read the attribute " + key + " on " + object);
+  return v;
+}
+
+bool h5_has_attribute(const std::string& path, const std::string& object, const std::string& key) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) return false;
+  const bool has = (object == "/" || H5Lexists(file, object.c_str(), H5P_DEFAULT) > 0) &&
+                   has_attribute(file, object, key);
+  H5Fclose(file);
+  return has;
+}
+
+std::vector<std::string> h5_dataset_paths(const std::string& path) {
+  const ReadOnlyFile f(path);
+  return dataset_paths(f.id);
 }
 
 SurfaceSeries read_surface_series(const std::string& path, const std::string& group) {

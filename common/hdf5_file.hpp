@@ -1,6 +1,9 @@
 // A thin RAII wrapper over the HDF5 C API: create a file, write double/int datasets of any rank,
 // and scalar or string attributes. Files are written to "<name>.partial" and renamed on
 // close(), so an interrupted or failed run never leaves a half-written file under the real name.
+// close() also stamps the provenance on the root (provenance.hpp: granbench_version,
+// git_commit, command_line, created) and gives every dataset its `units` and `long_name`
+// (dataset_units.hpp) unless the writer set them, so every file granbench writes has them.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "material.hpp"
 #include "surface_series.hpp"
 
 namespace granbench {
@@ -27,7 +31,7 @@ class H5Writer {
   // Attributes on an object ("/" for the file root).
   void attribute(const std::string& object, const std::string& key, double value);
   void attribute(const std::string& object, const std::string& key, const std::string& value);
-  // Flush, close and rename into place.
+  // Flush, close and rename into place (after the provenance and units, see above).
   void close();
   // Copy `object` (a group with everything under it, or a dataset, with their attributes) from
   // the HDF5 file `source` to the same path here (hdf5_copy.cpp).
@@ -42,11 +46,23 @@ class H5Writer {
 };
 
 void write_surface_series(H5Writer& out, const std::string& group, const SurfaceSeries& s);
+// The inputs of a flow as root attributes: curve, the material constants (material.hpp's names),
+// and, where the output has them, angle_deg and h0 (NaN: not written).
+void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& m,
+                       double angle_deg, double h0);
 
 // Reading back (tests, resumable sweeps, plots-free analysis).
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
                                     std::vector<std::size_t>* dims = nullptr);
 bool h5_has(const std::string& path, const std::string& name);
+// Attributes of an object ("/" for the root); throw std::runtime_error when missing.
+std::string h5_read_string_attribute(const std::string& path, const std::string& object,
+                                     const std::string& key);
+double h5_read_double_attribute(const std::string& path, const std::string& object,
+                                const std::string& key);
+bool h5_has_attribute(const std::string& path, const std::string& object, const std::string& key);
+// Every dataset of the file by its full path ("/surface/h"), in the file's order.
+std::vector<std::string> h5_dataset_paths(const std::string& path);
 SurfaceSeries read_surface_series(const std::string& path, const std::string& group);
 // A numeric attribute of an object; throws std::runtime_error when absent (hdf5_copy.cpp).
 double h5_read_attribute(const std::string& path, const std::string& object, const std::string& key);

@@ -33,7 +33,9 @@ void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv
   auto U = [&](int i, int k) { return u[g.at(i, std::clamp(k, 0, nz - 1))]; };
   auto W = [&](int i, int k) { return w[g.at(i, std::clamp(k, 0, nz))]; };
 
-  // x-momentum on the control volume of u-face (i, k).
+  // x-momentum on the control volume of u-face (i, k). (Rows in parallel: each entry is written
+  // once; parallel.hpp.)
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       // x-fluxes at cell centres i-1 (left) and i (right)
@@ -50,6 +52,7 @@ void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv
       adv_u[g.at(i, k)] = (Vr * qr - Vl * ql) / g.dx + (Wt * qt - Wb * qb) / g.dz - U(i, k) * div;
     }
   // z-momentum on the control volume of interior w-face (i, k).
+#pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       // x-fluxes at corners (i, k) (left) and (i+1, k) (right)

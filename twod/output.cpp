@@ -9,7 +9,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "diagnostics.hpp"
 
@@ -20,6 +23,13 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   out.create_group(group);
   const Rheology& r = p.rheology;
   const Material& m = r.material;
+  // The flow's inputs and the grid also on the root, where every granbench file keeps them.
+  if (group != "/") {
+    write_flow_inputs(out, std::string(curve_name(r.curve)), m, p.zeta * 180.0 / std::numbers::pi,
+                      NAN);
+    out.attribute("/", "nx", g.nx);
+    out.attribute("/", "nz", g.nz);
+  }
   auto a = [&](const char* key, double v) { out.attribute(group, key, v); };
   a("nx", g.nx);
   a("nz", g.nz);
@@ -61,11 +71,20 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,
                                const Grid& g)
     : out_(out), h5_name_(std::move(h5_file_name)), xdmf_path_(std::move(xdmf_path)), g_(g) {
+  check_xdmf_file_name(h5_name_);
   std::vector<double> xn(g.nx + 1), zn(g.nz + 1);
   for (int i = 0; i <= g.nx; ++i) xn[i] = i * g.dx;
   for (int k = 0; k <= g.nz; ++k) zn[k] = k * g.dz;
   out_.write("/snapshots/x_nodes", xn);
   out_.write("/snapshots/z_nodes", zn);
+  // The node coordinates as one (nz+1, nx+1, 2) array of (x, z), x fastest: the 2DSMesh/XY
+  // geometry that all three ParaView XDMF readers open (the legacy reader shows 2DRectMesh blank
+  // and its Glyph filter crashes on it; shared/reports/paraview.md).
+  std::vector<double> xz;
+  xz.reserve(2 * xn.size() * zn.size());
+  for (double z : zn)
+    for (double x : xn) xz.insert(xz.end(), {x, z});
+  out_.write("/snapshots/xz_nodes", xz, {zn.size(), xn.size(), 2});
 }
 
 void SnapshotWriter::write(const Solver& solver) {
@@ -92,6 +111,11 @@ void SnapshotWriter::write(const Solver& solver) {
   out_.write(grp + "/I", I, dims);
   out_.write(grp + "/eta", props.eta_c, dims);
   out_.write(grp + "/C", ill_posedness_field(props.I_c, solver.viscosity_model().curve()), dims);
+  // (u, w, 0) per cell, so that Glyph and Stream Tracer work without a Calculator.
+  std::vector<double> velocity;
+  velocity.reserve(3 * uc.size());
+  for (std::size_t c = 0; c < uc.size(); ++c) velocity.insert(velocity.end(), {uc[c], wc[c], 0.0});
+  out_.write(grp + "/velocity", velocity, {dims[0], dims[1], 3});
   out_.attribute(grp, "t", s.t);
   times_.push_back(s.t);
 }
@@ -100,7 +124,16 @@ void SnapshotWriter::finish() const {
   const std::string partial = xdmf_path_ + ".partial";
   {
     std::ofstream x(partial);
+    // Times in full: a rounded time would not name the sample it belongs to.
+    x << std::setprecision(std::numeric_limits<double>::max_digits10);
     const int nx = g_.nx, nz = g_.nz;
+    const std::string h5 = xml_escaped(h5_name_);
+    const auto item = [&](const std::string& dims, const std::string& path) {
+      return "<DataItem Dimensions=\"" + dims + "\" NumberType=\"Float\" Precision=\"8\" " +
+             "Format=\"HDF\">" + h5 + ":" + path + "</DataItem>";
+    };
+    const std::string nodes = std::to_string(nz + 1) + " " + std::to_string(nx + 1);
+    const std::string cells = std::to_string(nz) + " " + std::to_string(nx);
     x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
       << "  <Grid Name=\"twod\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (std::size_t n = 0; n < times_.size(); ++n) {
@@ -108,22 +141,43 @@ void SnapshotWriter::finish() const {
       std::snprintf(grp, sizeof grp, "/snapshots/%04zu", n);
       x << "   <Grid Name=\"t" << n << "\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << times_[n] << "\"/>\n"
-        << "    <Topology TopologyType=\"2DRectMesh\" Dimensions=\"" << nz + 1 << " " << nx + 1
-        << "\"/>\n    <Geometry GeometryType=\"VXVY\">\n"
-        << "     <DataItem Dimensions=\"" << nx + 1 << "\" NumberType=\"Float\" Precision=\"8\" "
-        << "Format=\"HDF\">" << h5_name_ << ":/snapshots/x_nodes</DataItem>\n"
-        << "     <DataItem Dimensions=\"" << nz + 1 << "\" NumberType=\"Float\" Precision=\"8\" "
-        << "Format=\"HDF\">" << h5_name_ << ":/snapshots/z_nodes</DataItem>\n    </Geometry>\n";
+        << "    <Topology TopologyType=\"2DSMesh\" Dimensions=\"" << nodes << "\"/>\n"
+        << "    <Geometry GeometryType=\"XY\">\n     "
+        << item(nodes + " 2", "/snapshots/xz_nodes") << "\n    </Geometry>\n";
       for (const char* f : {"u", "w", "p", "f", "I", "eta", "C"})
-        x << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-          << "     <DataItem Dimensions=\"" << nz << " " << nx
-          << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5_name_ << ":" << grp
-          << "/" << f << "</DataItem>\n    </Attribute>\n";
+        x << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n     "
+          << item(cells, std::string(grp) + "/" + f) << "\n    </Attribute>\n";
+      x << "    <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Cell\">\n     "
+        << item(cells + " 3", std::string(grp) + "/velocity") << "\n    </Attribute>\n";
       x << "   </Grid>\n";
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";
   }
   std::filesystem::rename(partial, xdmf_path_);
+}
+
+std::string xml_escaped(const std::string& text) {
+  std::string e;
+  for (char c : text) switch (c) {
+      case '&': e += "&amp;"; break;
+      case '<': e += "&lt;"; break;
+      case '>': e += "&gt;"; break;
+      case '"': e += "&quot;"; break;
+      case '\'': e += "&apos;"; break;
+      default: e += c;
+    }
+  return e;
+}
+
+void check_xdmf_file_name(const std::string& name) {
+  // The Xdmf3 readers return an empty data set, silently, for a file name with white space, and
+  // "name:path" is how XDMF addresses a dataset, so a ':' would split the name.
+  const auto bad = name.find_first_of(" \t\n\r\v\f:");
+  if (bad != std::string::npos)
+    throw std::invalid_argument("--out: '" + name + "' has " +
+                                (name[bad] == ':' ? std::string("a ':'") : std::string("white space")) +
+                                ", which ParaView's XDMF readers cannot open; valid: a file name "
+                                "without spaces or ':'");
 }
 
 }  // namespace granbench::twod

@@ -7,6 +7,7 @@
 
 #include "material.hpp"
 #include "mu_curves.hpp"
+#include "parallel.hpp"
 
 namespace granbench::twod {
 
@@ -106,6 +107,11 @@ struct SolverParams {
   // weakly damped surface-layer shear modes (lambda ~ 6 mm) grow (docs/twod-validation.md).
   bool advection_ab2 = true;
   bool advect_interface = true;
+  // OpenMP threads of the solver's loops (parallel.hpp); results do not depend on it. The
+  // default is the thread count of the thread that makes these parameters (OMP_NUM_THREADS, or
+  // granbench --threads on the command's thread), so that a run handed to another std::thread
+  // (compare, sweep --jobs, case --jobs) keeps it: OpenMP's setting belongs to each thread.
+  int threads = thread_count();
 };
 
 }  // namespace granbench::twod

@@ -3,9 +3,15 @@
 //
 //   r0 = b - A x0, z = M^{-1} r, d = z;  repeat: alpha = (r.z)/(d.Ad), x += alpha d,
 //   r -= alpha A d, stop when ||r|| <= tol ||b||; beta = (r.z)_new/(r.z)_old, d = z + beta d.
+//
+// The dot products and norms are the fixed-block sums of parallel.hpp, so the iterates - and the
+// iteration counts - do not depend on the number of threads; the vector updates are parallel.
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
+
+#include "parallel.hpp"
 
 namespace granbench::twod {
 
@@ -14,7 +20,7 @@ namespace granbench::twod {
 template <class Apply, class Precondition>
 int pcg(Apply&& apply, Precondition&& precondition, const Eigen::VectorXd& b, Eigen::VectorXd& x,
         double tol, int max_iterations) {
-  const double bnorm = b.norm();
+  const double bnorm = std::sqrt(deterministic_dot(b, b));
   if (bnorm == 0.0) {
     x.setZero(b.size());
     return 0;
@@ -23,19 +29,18 @@ int pcg(Apply&& apply, Precondition&& precondition, const Eigen::VectorXd& b, Ei
   apply(x, q);
   r = b - q;
   const double target = tol * bnorm;
-  if (r.norm() <= target) return 0;
+  if (std::sqrt(deterministic_dot(r, r)) <= target) return 0;
   precondition(r, z);
   Eigen::VectorXd d = z;
-  double rz = r.dot(z);
+  double rz = deterministic_dot(r, z);
   for (int it = 1; it <= max_iterations; ++it) {
     apply(d, q);
-    const double alpha = rz / d.dot(q);
-    x.noalias() += alpha * d;
-    r.noalias() -= alpha * q;
-    if (r.norm() <= target) return it;
+    const double alpha = rz / deterministic_dot(d, q);
+    const double rr = cg_update(alpha, d, q, x, r);  // x += alpha d, r -= alpha q; r . r
+    if (std::sqrt(rr) <= target) return it;
     precondition(r, z);
-    const double rz_new = r.dot(z);
-    d = z + (rz_new / rz) * d;
+    const double rz_new = deterministic_dot(r, z);
+    cg_direction(z, rz_new / rz, d);  // d = z + beta d
     rz = rz_new;
   }
   return -1;

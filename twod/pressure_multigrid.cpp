@@ -13,12 +13,21 @@
 //                face (the rediscretisation for constant beta; keeps the jump in place).
 //   coarsest     dense LDLT once the grid cannot be halved (or is tiny); 20 symmetric line
 //                sweeps instead when an odd size stops the coarsening above 2048 cells.
+// Threads (parallel.hpp): the columns of one colour are independent, so each colour's columns are
+// solved in parallel; the operator, factors and grid transfers are parallel over columns. Every
+// value is computed by the same arithmetic for any thread count. Levels below kParallelCells
+// cells stay on one thread (too little work to share).
 #include "pressure_multigrid.hpp"
 
 namespace granbench::twod {
 
+namespace {
+constexpr int kParallelCells = 2048;
+}  // namespace
+
 void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(nx * nz);
+#pragma omp parallel for schedule(static) if (nx * nz >= kParallelCells)
   for (int i = 0; i < nx; ++i) {
     const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
     const double* cl = &cx[cell(i, 0)];
@@ -38,6 +47,7 @@ void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
 void PoissonLevel::factorise() {
   cp.resize(nx * nz);
   inv_m.resize(nx * nz);
+#pragma omp parallel for schedule(static) if (nx * nz >= kParallelCells)
   for (int i = 0; i < nx; ++i) {
     const int ir = i == nx - 1 ? 0 : i + 1;
     for (int k = 0; k < nz; ++k) {
@@ -72,6 +82,7 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
+#pragma omp parallel for schedule(static) if (F.nx * F.nz >= kParallelCells)
     for (int i = 0; i < C.nx; ++i) {
       for (int k = 0; k < C.nz; ++k)
         C.cx[C.cell(i, k)] = 0.5 * (F.cx[F.cell(2 * i, 2 * k)] + F.cx[F.cell(2 * i, 2 * k + 1)]);
@@ -79,7 +90,7 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
         C.cz[C.zface(i, k)] = 0.5 * (F.cz[F.zface(2 * i, 2 * k)] + F.cz[F.zface(2 * i + 1, 2 * k)]);
     }
   }
-  for (PoissonLevel& L : levels_) L.factorise();
+  for (PoissonLevel& L : levels_) L.factorise();  // (parallel inside)
   const PoissonLevel& B = levels_.back();
   const int n = B.nx * B.nz;
   direct_coarsest_ = n <= 2048;
@@ -136,16 +147,24 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
 
 void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b,
                                    Eigen::VectorXd& x, bool forward) const {
-  // Zebra order: even columns, then odd ones, ascending (forward); the exact reverse backward.
-  // Columns of one colour are not neighbours (for nx != 3), so they are solved two at a time.
+  // Zebra order: even columns, then odd ones (forward); the exact reverse backward. Columns of
+  // one colour are not neighbours, except the first and the last when nx is odd (periodic): the
+  // last column of an odd nx is then solved alone, after the others of its colour (forward) or
+  // before them (backward). The others are independent, so they are solved in parallel, two at
+  // a time (pairs fixed by their index; each column's arithmetic is the same as alone).
   const int nx = L.nx;
+  const bool parallel = nx * L.nz >= kParallelCells;
   auto sweep_colour = [&](int first, bool ascending) {
     const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
-    auto column = [&](int m) { return ascending ? first + 2 * m : first + 2 * (count - 1 - m); };
-    int m = 0;
-    if (nx != 3)
-      for (; m + 1 < count; m += 2) solve_columns<2>(L, b, x, {column(m), column(m + 1)});
-    for (; m < count; ++m) solve_columns<1>(L, b, x, {column(m)});
+    const bool last_alone = nx % 2 == 1 && first == 0 && count > 1;  // column nx - 1
+    const int free = last_alone ? count - 1 : count;  // columns first + 2m, m < free
+    const int pairs = free / 2;
+    if (last_alone && !ascending) solve_columns<1>(L, b, x, {nx - 1});
+#pragma omp parallel for schedule(static) if (parallel)
+    for (int m = 0; m < pairs; ++m)
+      solve_columns<2>(L, b, x, {first + 4 * m, first + 4 * m + 2});
+    if (free % 2 == 1) solve_columns<1>(L, b, x, {first + 2 * (free - 1)});
+    if (last_alone && ascending) solve_columns<1>(L, b, x, {nx - 1});
   };
   if (forward) {
     sweep_colour(0, true);
@@ -173,17 +192,22 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   x.setZero(L.nx * L.nz);
   line_sweep(L, b, x, true);
   L.apply(x, res_[l]);
-  res_[l] = b - res_[l];
+  const bool parallel = L.nx * L.nz >= kParallelCells;
   const PoissonLevel& C = levels_[l + 1];
   Eigen::VectorXd& rc = rhs_c_[l + 1];
   rc.setZero(C.nx * C.nz);
-  for (int i = 0; i < L.nx; ++i) {  // R = P^T: sum of the 2 x 2 fine cells
-    const double* r = &res_[l][L.cell(i, 0)];
-    double* rci = &rc[C.cell(i / 2, 0)];
-    for (int k = 0; k < L.nz; k += 2) rci[k / 2] += r[k] + r[k + 1];
-  }
+  const Eigen::VectorXd& Ax = res_[l];
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int ic = 0; ic < C.nx; ++ic)  // R = P^T: sum of the 2 x 2 fine residuals b - A x
+    for (int i = 2 * ic; i < 2 * ic + 2; ++i) {  // fine columns in order, as serially
+      const double* bi = &b[L.cell(i, 0)];
+      const double* ai = &Ax[L.cell(i, 0)];
+      double* rci = &rc[C.cell(ic, 0)];
+      for (int k = 0; k < L.nz; k += 2) rci[k / 2] += (bi[k] - ai[k]) + (bi[k + 1] - ai[k + 1]);
+    }
   Eigen::VectorXd& xc = x_c_[l + 1];
   vcycle(l + 1, rc, xc);
+#pragma omp parallel for schedule(static) if (parallel)
   for (int i = 0; i < L.nx; ++i) {  // P: piecewise constant
     double* xi = &x[L.cell(i, 0)];
     const double* xci = &xc[C.cell(i / 2, 0)];

@@ -50,10 +50,13 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   auto id = [&](int i, int k) { return g.wrap(i) * nz + k; };
   b_.resize(n);
   if (x_.size() != n) x_.setZero(n);  // warm start: the previous step's increment
+  // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {
+#pragma omp parallel for schedule(static)
     for (int i = 0; i < nx; ++i) {
       for (int k = 0; k < nz; ++k) op_.cx[op_.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
       op_.cz[op_.zface(i, 0)] = 0.0;                                       // bed: no flux
@@ -88,12 +91,14 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
     iterations = solver_.solve(A_.matrix(), b_, x_);
   }
 
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       s.u[c] = u_star[c] - dt / props.rho_u[c] * (x_[id(i, k)] - x_[id(i - 1, k)]) / g.dx;
       s.p[c] += x_[id(i, k)];
     }
+#pragma omp parallel for schedule(static)
   for (int i = 0; i < nx; ++i) {
     s.w[g.at(i, 0)] = 0.0;
     for (int k = 1; k < nz; ++k) {

@@ -31,6 +31,8 @@
 // interface cells and at interface corners with the overburden pressure interpolated to the
 // surface height of the columns, and treats an interface corner as granular below that height
 // and as light fluid above it.
+// Threads: the grid loops are parallel over rows; each value is written once, by the same
+// arithmetic for any thread count (parallel.hpp).
 #include "properties.hpp"
 
 #include <algorithm>
@@ -85,9 +87,11 @@ void update_densities(const Grid& g, const std::vector<double>& f, const Rheolog
                       Properties& props) {
   const double rg = r.material.bulk_density(), rl = r.rho_light;
   auto rho = [&](double fr) { return fr * rg + (1.0 - fr) * rl; };
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < g.nz; ++k)
     for (int i = 0; i < g.nx; ++i)
       props.rho_u[g.at(i, k)] = rho(0.5 * (f[g.at(i - 1, k)] + f[g.at(i, k)]));
+#pragma omp parallel for schedule(static)
   for (int k = 0; k <= g.nz; ++k)
     for (int i = 0; i < g.nx; ++i) {
       const double fb = f[g.at(i, std::max(k - 1, 0))], ft = f[g.at(i, std::min(k, g.nz - 1))];
@@ -120,6 +124,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   auto share = [](double part, double D2) { return D2 > 0.0 ? std::min(part / D2, 1.0) : 0.0; };
   // gamma = du/dz + dw/dx at the corners, with the bed and top conditions.
   std::vector<double> gam(g.corners());
+#pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) / g.dx;
@@ -136,9 +141,11 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // highest full cell below the surface.
   const bool extrapolate = model.rheology().interface_pressure == InterfacePressure::Extrapolated;
   std::vector<double> hcol(nx, 0.0);
-  if (extrapolate)
-    for (int k = 0; k < nz; ++k)
-      for (int i = 0; i < nx; ++i) hcol[i] += f[g.at(i, k)] * g.dz;
+  if (extrapolate) {
+#pragma omp parallel for schedule(static)  // columns; each sums over k in the serial order
+    for (int i = 0; i < nx; ++i)
+      for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
+  }
   // p at height z in column i (or the mean of columns i-1, i when `corner`): linear between the
   // centre of the highest row below z whose cells are full and, at the surface height h, the
   // pressure p_s of the lowest light-fluid row above (its overburden; 0 if there is none).
@@ -162,6 +169,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     return ps + (p_at(kb) - ps) * (h - z) / (h - zb);
   };
   std::vector<double> Dxx(g.cells()), Dzz(g.cells());
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
@@ -177,6 +185,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
       props.I_c[c] = model.inertial_number(p[c], D);
     }
+  // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
+#pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
     for (int i = 0; i < nx; ++i) {

@@ -39,6 +39,7 @@
 
 #include "diagnostics.hpp"
 #include "momentum_advection.hpp"
+#include "parallel.hpp"
 #include "surface_row_pressure.hpp"
 #include "time_step.hpp"
 #include "viscosity_pressure.hpp"
@@ -89,6 +90,8 @@ void Solver::set_warm_start(const WarmStart& w) {
 }
 
 double Solver::step(double dt_limit) {
+  // The thread count is per calling thread in OpenMP: set it for whichever thread steps.
+  if (params_.threads >= 1 && params_.threads != thread_count()) set_thread_count(params_.threads);
   double dt_full = choose_time_step(g_, s_, params_, stats_.dt_last);
   if (stats_.dt_last <= 0.0) dt_full = std::min(dt_full, params_.dt_initial);
   double dt = dt_full;
@@ -129,9 +132,12 @@ double Solver::step(double dt_limit) {
         adv_u_ = adv_u_old_;
         adv_w_ = adv_w_old_;
       } else {
-        for (std::size_t n = 0; n < adv_u_.size(); ++n)
+        const long nu = long(adv_u_.size()), nw = long(adv_w_.size());
+#pragma omp parallel for schedule(static)
+        for (long n = 0; n < nu; ++n)
           adv_u_[n] = (1.0 + 0.5 * r) * adv_u_old_[n] - 0.5 * r * adv_u_[n];
-        for (std::size_t n = 0; n < adv_w_.size(); ++n)
+#pragma omp parallel for schedule(static)
+        for (long n = 0; n < nw; ++n)
           adv_w_[n] = (1.0 + 0.5 * r) * adv_w_old_[n] - 0.5 * r * adv_w_[n];
       }
     }

@@ -33,6 +33,7 @@ std::vector<double> viscosity_pressure(const Grid& g, const SolverParams& params
     return rho_g * g_cos * std::max(h - z, 0.0) + rho_l * g_cos * (g.Lz - std::max(h, z));
   };
   std::vector<double> p_eta(p);
+#pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
   for (int k = 0; k < g.nz; ++k) {
     const double z = g.zc(k);
     for (int i = 0; i < g.nx; ++i)

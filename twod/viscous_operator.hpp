@@ -34,7 +34,7 @@ class ViscousOperator {
   // y = A x.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   // z = M^{-1} r: one sweep over the lines (u-lines, then w-lines, columns ascending) and one
-  // in exactly the reverse order, from z = 0, so that M is symmetric.
+  // in exactly the reverse order, from z = 0, so that M is symmetric. Serial (see the .cpp).
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   // The same matrix assembled (for the sparse-matrix preconditioners of SpdSolver).
   void assemble(PatternedMatrix& A) const;

@@ -61,7 +61,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   const double guess_scale = have_increment ? dt / dt_previous_ : 0.0;
   b_.setZero(op_.size());
   x_.resize(op_.size());
-  // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n.
+  // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n. (Loops over
+  // rows in parallel: each entry is written once; parallel.hpp.)
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
@@ -71,6 +73,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];
     }
+#pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
@@ -83,8 +86,10 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   if (tangent_) {
     const Fields& at = about ? *about : s;
     x_old_.resize(op_.size());
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) x_old_[op_.u_index(i, k)] = at.u[g.at(i, k)];
+#pragma omp parallel for schedule(static)
     for (int k = 1; k < nz; ++k)
       for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = at.w[g.at(i, k)];
     lagged_c_.resize(props.eta_c.size());
@@ -119,15 +124,19 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     iterations = solver_.solve(A_.matrix(), b_, x_);
   }
   increment_ = x_;
+  u_star.resize(g.cells());
+  w_star.assign(g.w_faces(), 0.0);
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) increment_[op_.u_index(i, k)] -= s.u[g.at(i, k)];
+    for (int i = 0; i < nx; ++i) {
+      increment_[op_.u_index(i, k)] -= s.u[g.at(i, k)];
+      u_star[g.at(i, k)] = x_[op_.u_index(i, k)];
+    }
+#pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) increment_[op_.w_index(i, k)] -= s.w[g.at(i, k)];
   dt_previous_ = dt;
-  u_star.resize(g.cells());
-  for (int k = 0; k < nz; ++k)
-    for (int i = 0; i < nx; ++i) u_star[g.at(i, k)] = x_[op_.u_index(i, k)];
-  w_star.assign(g.w_faces(), 0.0);
+#pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) w_star[g.at(i, k)] = x_[op_.w_index(i, k)];
   for (int i = 0; i < nx; ++i) w_star[g.at(i, nz)] = w_star[g.at(i, nz - 1)];  // dw/dz = 0

@@ -15,6 +15,8 @@
 //
 // Normals: Youngs' 3x3 weighted gradient  m = -grad f  (cell-unit coordinates), with f
 // periodic in x and mirrored (zero gradient) at the bed and the top.
+// Threads: the fluxes of a sweep read f only and the update writes each cell once, so both
+// loops are parallel over rows (parallel.hpp).
 #include "vof_advection.hpp"
 
 #include <algorithm>
@@ -55,6 +57,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   if (dir == 0) {
     const double r = dt / g.dx;
     flux.assign(g.cells(), 0.0);  // flux through x-face (i, k)
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const double s = u[g.at(i, k)] * r;
@@ -63,6 +66,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
         else if (s < 0.0)
           flux[g.at(i, k)] = -donor_flux(g, f, i, k, 0, false, -s);
       }
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const std::size_t a = g.at(i, k), b = g.at(i + 1, k);
@@ -71,6 +75,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   } else {
     const double r = dt / g.dz;
     flux.assign(g.w_faces(), 0.0);  // flux through z-face (i, k); 0 at the bed
+#pragma omp parallel for schedule(static)
     for (int k = 1; k <= nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const double s = w[g.at(i, k)] * r;
@@ -80,12 +85,14 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
           flux[g.at(i, k)] = -donor_flux(g, f, i, k, 1, false, -s);
         // inflow through the top carries light fluid only (f = 0)
       }
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const std::size_t a = g.at(i, k), b = g.at(i, k + 1);
         f[a] += -(flux[b] - flux[a]) + c[a] * r * (w[b] - w[a]);
       }
   }
+  // (serial: the clipped volume is a running sum, kept in the serial order)
   for (double& v : f) {
     if (v < 0.0) {
       stats.clipped_volume += -v;

@@ -120,6 +120,7 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
     line << " / " << spec.runs.front().t_end << " s   ";
     std::cerr << line.str() << std::flush;
   };
+  const unsigned workers = std::max(1u, std::min<unsigned>(jobs, spec.runs.size()));
   auto worker = [&] {
     for (;;) {
       std::size_t i;
@@ -136,15 +137,16 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
           t_now[i] = t;
           show();
         };
-      out.runs[i] = run_layer(spec.runs[i], lp);
+      LayerRunSpec run = spec.runs[i];  // the workers share the OpenMP threads
+      run.params.threads = std::max(1, run.params.threads / static_cast<int>(workers));
+      out.runs[i] = run_layer(run, lp);
       std::lock_guard lock(mutex);
       t_now[i] = out.runs[i].t_reached;
       if (progress) show();
     }
   };
   std::vector<std::thread> pool;
-  for (unsigned w = 0; w < std::max(1u, std::min<unsigned>(jobs, spec.runs.size())); ++w)
-    pool.emplace_back(worker);
+  for (unsigned w = 0; w < workers; ++w) pool.emplace_back(worker);
   for (auto& th : pool) th.join();
   if (progress) std::cerr << "\n";
 

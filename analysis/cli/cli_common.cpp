@@ -9,6 +9,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "parallel.hpp"
+
 namespace granbench::cli {
 
 namespace {
@@ -53,7 +55,16 @@ CLI::Validator one_of(const std::vector<std::string>& values) {
 
 CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
 
-MuCurve FlowOptions::make_curve() const { return MuCurve(curve_kind(), material, h0); }
+MuCurve FlowOptions::make_curve() const {
+  // Some material values leave no curve of this kind to build (the regularised and low-I curves
+  // need a neutral point of the upper branch): bad input, not an internal error.
+  try {
+    return MuCurve(curve_kind(), material, h0);
+  } catch (const std::runtime_error& e) {
+    throw UsageError("--curve: the " + curve + " curve cannot be built from these material values (" +
+                     e.what() + "); valid: --mu-s, --mu-d, --I0, --alpha for which it exists, or another --curve");
+  }
+}
 
 SteadyState FlowOptions::steady() const {
   try {
@@ -84,11 +95,21 @@ void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
   app.add_option("--phi", m.phi, "solids volume fraction phi, in (0, 1)")->check(open_range(0.0, 1.0))->group(g)->capture_default_str();
   app.add_option("--rho-star", m.rho_star, "grain density [kg/m^3]")->check(positive())->group(g)->capture_default_str();
   app.add_option("--g", m.g, "gravity [m/s^2]")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3)")->group(g)->capture_default_str();
+  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3), > 0")->check(positive())->group(g)->capture_default_str();
   app.add_option("--alpha", m.alpha, "low-I regularisation alpha of (5.2)/(6.3), in (0, 2)")->check(open_range(0.0, 2.0))->group(g)->capture_default_str();
   app.add_option("--kk-mu0", m.kk_mu0, "Kamrin-Koval mu_0 of (5.1)")->check(positive())->group(g)->capture_default_str();
   app.add_option("--kk-cK", m.kk_cK, "Kamrin-Koval c_K of (5.1)")->check(positive())->group(g)->capture_default_str();
   app.add_option("--hm-c", m.hm_c, "Holyoake-McElwaine c of (6.1)")->check(positive())->group(g)->capture_default_str();
+  // Every curve rises from mu_s to mu_d: with mu_s >= mu_d there is no curve, and the errors
+  // would come later, blamed on --angle.
+  app.parse_complete_callback([&m] {
+    if (!(m.mu_s < m.mu_d)) {
+      std::ostringstream msg;
+      msg << "--mu-s: value " << m.mu_s << " is not below --mu-d " << m.mu_d
+          << "; valid: mu_s < mu_d";
+      throw UsageError(msg.str());
+    }
+  });
 }
 
 void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
@@ -98,6 +119,26 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   // Expanded into options before parsing (config_file.hpp); declared here for --help.
   app.add_option("--config")->description("read options from a TOML file (the command line overrides it)");
+}
+
+void add_threads_option(CLI::App& app) {
+  app.add_option_function<int>(
+         "--threads", [](const int& n) { twod::set_thread_count(n); },
+         "OpenMP threads of the 2D solver, integer >= 1 (default: OMP_NUM_THREADS or all cores)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            std::size_t used = 0;
+            long n = 0;
+            try {
+              n = std::stol(text, &used);
+            } catch (const std::exception&) {
+              used = 0;
+            }
+            if (used == 0 || used != text.size() || n < 1 || n > 1024)
+              return "'" + text + "' is not an integer in the valid range [1, 1024]";
+            return {};
+          },
+          "in [1, 1024]", "thread_count"));
 }
 
 nlohmann::json number_or_null(double v) {

@@ -48,6 +48,11 @@ struct OutputOptions {
 };
 void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot = true);
 
+// --threads N (integer >= 1): the OpenMP threads of the 2D solver for this command, set on the
+// command's thread as soon as the option is parsed (twod/parallel.hpp); without it,
+// OMP_NUM_THREADS or all cores. Results do not depend on it.
+void add_threads_option(CLI::App& app);
+
 // Print JSON (pretty) to stdout; nulls for non-finite numbers.
 void print_json(const nlohmann::json& j);
 nlohmann::json number_or_null(double v);

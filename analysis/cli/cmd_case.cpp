@@ -195,6 +195,7 @@ void add_case_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--json", o->output.json, "print the results as JSON");
   sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");
+  add_threads_option(*sub);
   sub->footer(exit_codes_help());
   sub->callback([o] { run_case(*o); });
 }

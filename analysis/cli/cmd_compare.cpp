@@ -84,12 +84,10 @@ void run_compare(const CompareOptions& o) {
   Comparison c;
   c.chute = chute;
   c.base = chute.steady();
-  // Both models at once (one core each); the exact theories meanwhile on this thread.
-  auto depthavg_run = std::async(std::launch::async, [&] { return run_depthavg(chute, depthavg, ctl); });
-  auto twod_run = std::async(std::launch::async, [&] { return run_twod(chute, twod, ctl); });
+  // Both models at once (run_both shares the cores); the exact theories meanwhile on this thread.
+  auto runs = std::async(std::launch::async, [&] { return run_both(chute, depthavg, twod, ctl); });
   c.theory = exact_theories(chute);
-  c.depthavg = depthavg_run.get();
-  c.twod = twod_run.get();
+  std::tie(c.depthavg, c.twod) = runs.get();
   if (show) std::cerr << "\n";
   // Each model's seeded wave is the one nearest its own theory's phase speed.
   MeasureOptions depthavg_opt, twod_opt;
@@ -138,6 +136,7 @@ void add_compare_command(CLI::App& app) {
       "compare", "run both models on one chute flow and compare them with exact linear theory");
   add_flow_options(*sub, o->flow);
   add_output_options(*sub, o->output);
+  add_threads_option(*sub);
   sub->footer(exit_codes_help());
   sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")->check(positive())->capture_default_str();
   sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")->check(positive())->capture_default_str();

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli_common.hpp"
+#include "help_footer.hpp"
 #include "commands.hpp"
 #include "dispersion.hpp"
 #include "dispersion_curve.hpp"
@@ -53,7 +54,7 @@ Theory parse_theory(const std::string& t) {
 }
 
 void write_dispersion_data(const std::string& path, const SteadyState& s, double chi,
-                           const std::vector<DispersionMode>& modes) {
+                           const std::vector<DispersionMode>& modes, const std::string& curve) {
   // The curve over k_hat (log grid) and the chosen points, dimensional and non-dimensional.
   const DispersionParams p = DispersionParams::from(s, chi);
   std::vector<double> pk, pg, pc, pL;
@@ -74,7 +75,7 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
   out.attribute("/", "R", p.R);
   out.attribute("/", "Gamma", p.Gamma);
   out.attribute("/", "u_mean", s.u_mean);
-  out.attribute("/", "h0", s.h0);
+  write_flow_inputs(out, curve, s.material, s.zeta * 180.0 / std::numbers::pi, s.h0);
   out.close();
 }
 
@@ -95,7 +96,7 @@ void run_dispersion(const DispersionOptions& o) {
 
   if (!o.output.out.empty() || !o.output.plot.empty()) {
     const std::string h5 = !o.output.out.empty() ? o.output.out : o.output.plot + ".data.h5";
-    write_dispersion_data(h5, s, chi, modes);
+    write_dispersion_data(h5, s, chi, modes, o.flow.curve);
     if (!o.output.plot.empty()) {
       run_plot_script("dispersion.py", h5, o.output.plot);
       if (o.output.out.empty()) std::filesystem::remove(h5);
@@ -148,6 +149,9 @@ void add_dispersion_command(CLI::App& app) {
   auto opts = std::make_shared<DispersionOptions>();
   CLI::App* sub = app.add_subcommand(
       "dispersion", "exact linear growth rate and phase speed for domain lengths Lx (7.11)");
+  sub->footer(help_footer({"granbench dispersion --Lx 0.04 --Lx 0.08 --json",
+                           "granbench dispersion --theory twod --Lx 0.08 --out dispersion.h5"},
+                          {0, 2}));
   add_flow_options(*sub, opts->flow);
   add_output_options(*sub, opts->output);
   sub->add_option("--Lx", opts->Lx, "domain length(s) = wavelength(s) [m], > 0")

@@ -59,6 +59,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(positive())
       ->capture_default_str();
   add_output_options(app, o.output, false);
+  add_threads_option(app);
 }
 
 void check_run_options(const RunOptions& o) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "help_footer.hpp"
 #include "commands.hpp"
 #include "dispersion.hpp"
 #include "hdf5_file.hpp"
@@ -36,9 +37,9 @@ void run_steady(const SteadyOptions& o) {
     out.write("profile/p", p);
     for (auto [k, v] : {std::pair{"I_zeta", s.I_zeta}, {"u_surface", s.u_surface},
                         {"u_mean", s.u_mean}, {"Fr", s.Fr}, {"R", s.R}, {"Gamma", s.Gamma},
-                        {"nu", s.nu}, {"angle_deg", o.flow.angle_deg}, {"h0", s.h0}})
+                        {"nu", s.nu}})
       out.attribute("/", k, v);
-    out.attribute("/", "curve", o.flow.curve);
+    write_flow_inputs(out, o.flow.curve, o.flow.material, o.flow.angle_deg, s.h0);
     out.close();
   }
   const double Fc = critical_froude(1.0);
@@ -73,6 +74,9 @@ void add_steady_command(CLI::App& app) {
   auto opts = std::make_shared<SteadyOptions>();
   CLI::App* sub =
       app.add_subcommand("steady", "the steady uniform Bagnold flow on a slope (§5.2, §7)");
+  sub->footer(help_footer({"granbench steady --angle 28.5 --h0 0.004 --json",
+                           "granbench steady --curve jop --angle 25 --out steady.h5"},
+                          {0, 2}));
   add_flow_options(*sub, opts->flow);
   add_output_options(*sub, opts->output, /*with_plot=*/false);
   sub->callback([opts] { run_steady(*opts); });

@@ -1,6 +1,7 @@
 // granbench wellposed: where a mu(I) curve keeps the incompressible equations well posed
 // (Barker & Gray 2017, §3-§4, figures 1, 2 and 7): neutral points (roots of C(I), (3.9)), the
 // well-posed intervals of I, A_- of the regularised curve (6.4) and its largest well-posed I.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -8,6 +9,7 @@
 #include <memory>
 
 #include "cli_common.hpp"
+#include "help_footer.hpp"
 #include "commands.hpp"
 #include "wellposedness_figures.hpp"
 
@@ -33,7 +35,8 @@ nlohmann::json wellposed(const WellposedOptions& o, const MuCurve& curve,
     {
       H5Writer out(h5);
       write_well_posedness_figures(out, fig);
-      out.attribute("/", "curve", std::string(curve_name(curve.kind())));
+      // No slope here: the curve and the material (and h0, which the Holyoake curve uses).
+      write_flow_inputs(out, std::string(curve_name(curve.kind())), o.flow.material, NAN, o.flow.h0);
       out.close();
     }
     if (!o.output.plot.empty()) {
@@ -105,6 +108,9 @@ void add_wellposed_command(CLI::App& app) {
   auto opts = std::make_shared<WellposedOptions>();
   CLI::App* sub = app.add_subcommand(
       "wellposed", "neutral points and well-posed ranges of I for a mu(I) curve (§3-§4)");
+  sub->footer(help_footer({"granbench wellposed --curve jop --json",
+                           "granbench wellposed --curve regularised --out wp.h5 --plot wp.png"},
+                          {0, 2}));
   add_flow_options(*sub, opts->flow, /*add_slope=*/false);
   add_output_options(*sub, opts->output);
   sub->callback([opts] { run_wellposed(*opts); });

@@ -49,7 +49,8 @@ nlohmann::json light_layer_json(const Linear2DResult& r) {
 }
 
 void write_theories(const std::string& path, const SteadyState& s,
-                    const std::vector<Linear2DResult>& results, const Linear2DOptions& opt) {
+                    const std::vector<Linear2DResult>& results, const Linear2DOptions& opt,
+                    const std::string& curve) {
   std::vector<double> k_hat;
   for (int i = 0; i < 60; ++i) k_hat.push_back(std::pow(10.0, -2.0 + 3.0 * i / 59.0));
   const int N_curve = std::min(opt.N, 24);  // converged to ~1e-7 (tests/linear2d)
@@ -115,8 +116,7 @@ void write_theories(const std::string& path, const SteadyState& s,
   out.attribute("/", "F", s.Fr);
   out.attribute("/", "Gamma", results.front().base.Gamma);
   out.attribute("/", "u_mean", s.u_mean);
-  out.attribute("/", "h0", s.h0);
-  out.attribute("/", "angle_deg", s.zeta * 180.0 / std::numbers::pi);
+  write_flow_inputs(out, curve, s.material, s.zeta * 180.0 / std::numbers::pi, s.h0);
   out.attribute("/", "N", double(opt.N));
   out.close();
 }
@@ -139,7 +139,7 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
 
   if (!output.out.empty() || !output.plot.empty()) {  // (3)
     const std::string h5 = !output.out.empty() ? output.out : output.plot + ".data.h5";
-    write_theories(h5, s, results, opt);
+    write_theories(h5, s, results, opt, t.curve_name);
     if (!output.plot.empty()) {
       run_plot_script("linear_theory.py", h5, output.plot);
       if (output.out.empty()) std::filesystem::remove(h5);

@@ -7,10 +7,12 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <optional>
 
 #include "commands.hpp"
 #include "mpi_session.hpp"
 #include "output_checks.hpp"
+#include "output_lock.hpp"
 #include "run_model.hpp"
 
 namespace granbench::cli {
@@ -34,12 +36,20 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
   s.ranks = spec.ranks = mpi.size();
   spec.rank = mpi.rank();
   std::vector<double> kept{1.0};  // a leading 1: the stored points are usable
+  // Rank 0 holds --out for the whole sweep: a second sweep on the same file is refused instead
+  // of each rewriting the file without the other's points.
+  std::optional<OutputLock> lock;
   if (s.root) try {
+      if (!spec.out.empty()) lock.emplace(spec.out);
       const auto finished = pack_points(read_finished(spec));
       kept.insert(kept.end(), finished.begin(), finished.end());
     } catch (const std::invalid_argument& e) {
       kept = {0.0};
       s.refused = e.what();
+    } catch (const OutputLock::LockHeld& e) {
+      kept = {0.0};
+      s.refused = std::string(e.what()) + ": another sweep is writing " + spec.out +
+                  "; wait for it to finish or choose another --out";
     }
   kept = mpi.broadcast(kept);
   if (kept[0] == 0.0) return s;
@@ -179,11 +189,13 @@ void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohma
     print_table(points, head.str());
   }
   const std::size_t expected = spec.Lx.size() * ((spec.depthavg ? 1 : 0) + (spec.twod ? 1 : 0));
-  const std::string where = spec.out.empty() ? "" : " kept in " + spec.out;
+  // Without --out the points lived in a scratch file for the figure, removed above: nothing is
+  // kept for a resume, and the message must not say otherwise.
+  const std::string kept = keep_data ? " kept in " + spec.out + "; run the same command again to resume"
+                                     : "; nothing is kept (give --out FILE to keep the points for a resume)";
   if (finished < expected && s.interrupted)
     throw CommandFailed("interrupted with " + std::to_string(finished) + " of " +
-                            std::to_string(expected) + " points" + where +
-                            "; run the same command again to resume",
+                            std::to_string(expected) + " points" + kept,
                         130);
   if (finished < expected) {
     const auto bad = std::find_if(points.begin(), points.end(),

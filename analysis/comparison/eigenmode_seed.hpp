@@ -1,4 +1,4 @@
-// Seeding the 2D solver with the exact linear eigenmode (issue 5, item 3): the twod initial
+// Seeding the 2D solver with the exact linear eigenmode: the twod initial
 // condition (surface h(x) and downslope velocity u(x, z); the solver derives w from continuity
 // and p hydrostatically, twod/initial_state.hpp) built from linear2d::Eigenmode
 // (analysis/linear2d_eigenmode.hpp):

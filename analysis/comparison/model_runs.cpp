@@ -10,7 +10,10 @@
 #include "model_runs.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <future>
 #include <numbers>
 #include <stdexcept>
 
@@ -101,7 +104,12 @@ GridPreset grid_preset(const std::string& name) {
   throw std::invalid_argument("grid_preset: unknown resolution '" + name + "'");
 }
 
-ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl) {
+namespace {
+
+// run_twod; with partner_done, the run uses s.threads - 1 threads (at least 1) until the flag
+// is raised (checked at each sample), then s.threads.
+ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl,
+                            const std::atomic<bool>* partner_done) {
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
   const twod::Grid grid(s.nx, s.nz, c.Lx, s.domain_height(c.h0));
@@ -114,6 +122,7 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
   params.rheology.rho_light = s.rho_light;
   params.rheology.eta_light = s.eta_light;
   params.viscosity_passes = s.viscosity_passes;
+  params.threads = partner_done ? std::max(1, s.threads - 1) : s.threads;
 
   ModelRun m;
   m.model = "twod";
@@ -129,10 +138,11 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
   schedule.dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
   twod::RunHooks hooks;
   hooks.stop = ctl.stop;
-  if (ctl.progress)
-    hooks.sample = [&](const twod::Solver& sv, const SurfaceSeries&) {
-      ctl.progress("twod", sv.state().t, c.t_end);
-    };
+  hooks.sample = [&](const twod::Solver& sv, const SurfaceSeries&) {
+    if (partner_done && *partner_done && solver.params().threads != s.threads)
+      solver.set_threads(s.threads);  // the partner's core is free
+    if (ctl.progress) ctl.progress("twod", sv.state().t, c.t_end);
+  };
   twod::RunResult r =
       twod::run(solver, SurfaceSeries::uniform_grid(c.Lx, static_cast<std::size_t>(s.nx), c.h0),
                 schedule, hooks);
@@ -154,6 +164,41 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
   m.I_max = rs.I_max;
   m.illposed_fraction = rs.illposed_fraction;
   return m;
+}
+
+}  // namespace
+
+ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl) {
+  return run_twod_alongside(c, s, ctl, nullptr);
+}
+
+std::pair<ModelRun, ModelRun> run_both(const ChuteCase& c, const DepthAvgSettings& depthavg,
+                                       const TwodSettings& twod, const RunControl& ctl) {
+  std::atomic<bool> depthavg_done{false};
+  auto d = std::async(std::launch::async, [&] {
+    struct Done {  // raised however run_depthavg ends, exceptions included
+      std::atomic<bool>& flag;
+      ~Done() { flag = true; }
+    } done{depthavg_done};
+    return run_depthavg(c, depthavg, ctl);
+  });
+  auto t = std::async(std::launch::async,
+                      [&] { return run_twod_alongside(c, twod, ctl, &depthavg_done); });
+  // both futures are waited for before anything is rethrown: neither thread outlives the flag
+  std::exception_ptr error;
+  ModelRun depthavg_run, twod_run;
+  try {
+    depthavg_run = d.get();
+  } catch (...) {
+    error = std::current_exception();
+  }
+  try {
+    twod_run = t.get();
+  } catch (...) {
+    if (!error) error = std::current_exception();
+  }
+  if (error) std::rethrow_exception(error);
+  return {std::move(depthavg_run), std::move(twod_run)};
 }
 
 }  // namespace granbench

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "chute_case.hpp"
 #include "grid.hpp"
@@ -48,6 +50,9 @@ struct TwodSettings {
   double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
   int chebyshev_N = 32;      // resolution of the eigenmode used for seeding
   int viscosity_passes = 1;  // Picard passes for eta per step (twod/parameters.hpp)
+  // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
+  // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.
+  int threads = twod::thread_count();
   // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep
   // keeps that dx at every Lx, so that every point has the resolution the preset was judged at.
   static constexpr double reference_length = 0.08;
@@ -72,5 +77,13 @@ GridPreset grid_preset(const std::string& name);
 
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl = {});
 ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl = {});
+
+// Both models on the same case at once, each on its own std::thread; returns {depthavg, twod},
+// the same records as run_depthavg and run_twod one after the other (neither run reads the
+// other's state, and the 2D results do not depend on its thread count). While the
+// depth-averaged run occupies a core, the 2D solver uses twod.threads - 1 OpenMP threads (at
+// least 1), then twod.threads: oversubscribed OpenMP threads wait on each other.
+std::pair<ModelRun, ModelRun> run_both(const ChuteCase& c, const DepthAvgSettings& depthavg,
+                                       const TwodSettings& twod, const RunControl& ctl = {});
 
 }  // namespace granbench

@@ -69,6 +69,8 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
   TwodSettings twod = spec.twod_settings;
   twod.nx = twod.cells_along(c.Lx);  // the preset's dx at every length
+  // the --jobs workers share the OpenMP threads (oversubscribed threads wait on each other)
+  twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
   const ModelRun r =
       p.model == "twod" ? run_twod(c, twod, ctl) : run_depthavg(c, spec.depthavg_settings, ctl);
   MeasureOptions opt;

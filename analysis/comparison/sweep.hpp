@@ -95,6 +95,10 @@ std::vector<SweepPoint> unpack_points(std::span<const double> packed);
 void write_sweep(const std::string& path, const SweepSpec& spec,
                  const std::vector<SweepPoint>& points);
 std::vector<SweepPoint> read_sweep(const std::string& path);
+// The settings that decide a point's value, by name, stored with the points and compared on
+// resume: every option of `granbench sweep` that changes a result lands in one of them
+// (tests/cli/test_sweep_settings.cpp checks that by enumerating the options).
+std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& spec);
 // Throws std::invalid_argument naming the first setting in which the sweep stored at `path`
 // differs from `spec` (sweep_store.cpp).
 void check_stored_settings(const std::string& path, const SweepSpec& spec);

@@ -8,9 +8,7 @@
 
 namespace granbench {
 
-namespace {
-// The settings that decide a point's value, stored with the points and compared on resume.
-std::vector<std::pair<std::string, double>> settings(const SweepSpec& s) {
+std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) {
   const Material& m = s.chute.material;
   const ChuteCase& c = s.chute;
   std::vector<std::pair<std::string, double>> v = {{"curve", static_cast<double>(c.curve)},
@@ -45,16 +43,21 @@ std::vector<std::pair<std::string, double>> settings(const SweepSpec& s) {
                        {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
                        {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
                        {"depthavg_rtol", s.depthavg_settings.rtol},
+                       {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0},
                        {"twod_nx", static_cast<double>(s.twod_settings.nx)},
                        {"twod_nz", static_cast<double>(s.twod_settings.nz)},
                        {"twod_Lz_over_h0", s.twod_settings.Lz_over_h0},
                        {"twod_eta_max", s.twod_settings.eta_max},
                        {"twod_rho_light", s.twod_settings.rho_light},
                        {"twod_eta_light", s.twod_settings.eta_light},
-                       {"twod_chebyshev_N", static_cast<double>(s.twod_settings.chebyshev_N)}});
+                       {"twod_chebyshev_N", static_cast<double>(s.twod_settings.chebyshev_N)},
+                       {"twod_viscosity_passes",
+                        static_cast<double>(s.twod_settings.viscosity_passes)}});
   }
   return v;
 }
+
+namespace {
 // Column names of the per-point table in the HDF5 file, in this order.
 const char* const kColumns[] = {"Lx",
                                 "k_hat",
@@ -117,18 +120,31 @@ SweepPoint from_row(const std::string& model, std::span<const double> r) {
 }
 }  // namespace
 
-// Throws std::invalid_argument naming the first setting in which the stored sweep differs.
+// Throws std::invalid_argument naming the first setting in which the stored sweep differs. The
+// settings are matched by name, so a file without one (written before it was stored) is refused
+// by that name rather than resumed with whatever value it was computed with.
 void check_stored_settings(const std::string& path, const SweepSpec& spec) {
-  const auto want = settings(spec);
-  const std::vector<double> have =
-      h5_has(path, "settings") ? h5_read_doubles(path, "settings") : std::vector<double>{};
-  std::string differs = have.size() != want.size() ? "which settings are stored" : "";
-  for (std::size_t i = 0; differs.empty() && i < want.size(); ++i)
-    if (have[i] != want[i].second) {
-      std::ostringstream s;
-      s << want[i].first << " " << have[i] << " there, " << want[i].second << " here";
-      differs = s.str();
-    }
+  const auto want = stored_settings(spec);
+  if (!h5_has(path, "settings"))
+    throw std::invalid_argument(path + " is not a sweep file (it has no stored settings); remove "
+                                "it or choose another file");
+  const std::vector<double> have = h5_read_doubles(path, "settings");
+  std::vector<std::string> names;
+  std::istringstream list(h5_read_string_attribute(path, "settings", "names"));
+  for (std::string n; std::getline(list, n, ',');) names.push_back(n);
+  std::string differs = names.size() != have.size() ? "the names of its settings" : "";
+  for (std::size_t i = 0; differs.empty() && i < want.size(); ++i) {
+    const auto at = std::find(names.begin(), names.end(), want[i].first);
+    std::ostringstream s;
+    if (at == names.end())
+      s << want[i].first << " not stored there, " << want[i].second << " here";
+    else if (const double v = have[static_cast<std::size_t>(at - names.begin())]; v != want[i].second)
+      s << want[i].first << " " << v << " there, " << want[i].second << " here";
+    differs = s.str();
+  }
+  for (std::size_t i = 0; differs.empty() && i < names.size(); ++i)
+    if (std::none_of(want.begin(), want.end(), [&](const auto& w) { return w.first == names[i]; }))
+      differs = names[i] + " stored there, not a setting of this sweep";
   if (!differs.empty())
     throw std::invalid_argument(path + " holds a sweep with other settings (" + differs +
                                 "); remove it or choose another file to resume from");
@@ -177,15 +193,13 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
                            *std::max_element(k_hat.begin(), k_hat.end()) * 3.0, 300);
   std::vector<double> values;
   std::string names;
-  for (const auto& [name, value] : settings(spec)) {
+  for (const auto& [name, value] : stored_settings(spec)) {
     values.push_back(value);
     names += (names.empty() ? "" : ",") + name;
   }
   out.write("settings", values);
   out.attribute("settings", "names", names);
-  out.attribute("/", "curve", std::string(curve_name(k.curve)));
-  out.attribute("/", "angle_deg", k.angle_deg);
-  out.attribute("/", "h0", k.h0);
+  write_flow_inputs(out, std::string(curve_name(k.curve)), k.material, k.angle_deg, k.h0);
   out.attribute("/", "u_mean", base.u_mean);
   out.attribute("/", "depthavg_chi", spec.depthavg_settings.chi);
   out.attribute("/", "depthavg_measurement", spec.depthavg_linear ? "linear_run" : "seeded_run");

@@ -1,4 +1,4 @@
-// Linear accuracy of the depth-averaged solver (issue 3, item 6): the growth rate and phase speed
+// Linear accuracy of the depth-averaged solver: the growth rate and phase speed
 // of a seeded normal mode (7.10), measured spectrally, match the exact relation (7.11) within
 // 0.5 % at wavelengths across the unstable band, and the decay rate past the cutoff; long waves
 // decay for F < 2/3 and grow for F > 2/3 (7.11); with chi = 5/4 the solver follows the

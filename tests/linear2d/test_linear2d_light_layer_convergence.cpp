@@ -9,11 +9,13 @@
 #include <numbers>
 #include <vector>
 
+#include "../support/verification_table.hpp"
 #include "linear2d_light_layer.hpp"
 #include "linear_stability_2d.hpp"
 
 using namespace granbench;
 using namespace granbench::linear2d;
+namespace vt = granbench::testing;
 
 namespace {
 struct Case {
@@ -35,11 +37,17 @@ Case section7(double Lx) {
 }
 
 // Local algebraic orders log(e_i/e_{i+1})/log(n_{i+1}/n_i) keep rising: faster than any power.
-void expect_spectral(const std::vector<int>& n, const std::vector<double>& err) {
+void expect_spectral(const std::vector<int>& n, const std::vector<double>& err,
+                     vt::VerificationTable& table) {
+  table.bound("each local order exceeds the previous one; the last > 10");
   double previous_order = 0.0;
-  for (std::size_t i = 1; i < err.size(); ++i) {
+  for (std::size_t i = 0; i < err.size(); ++i) {
+    if (i == 0) {
+      table.row({std::to_string(n[i]), vt::sci(err[i]), vt::dash()});
+      continue;
+    }
     const double order = std::log(err[i - 1] / err[i]) / std::log(double(n[i]) / n[i - 1]);
-    std::printf("  observed local order %zu: %.2f\n", i, order);
+    table.row({std::to_string(n[i]), vt::sci(err[i]), vt::fixed(order)});
     EXPECT_GT(order, previous_order) << i;
     previous_order = order;
   }
@@ -51,13 +59,20 @@ TEST(Linear2DLightLayerConvergence, GranularResolutionConvergesSpectrally) {
   const Case c = section7(0.08);
   const std::vector<int> Ns{8, 12, 16, 20, 24};
   std::vector<double> err;
-  for (int N : Ns) {
-    const auto l = nearest_light_layer_eigenvalue(c.b, c.l, c.k_hat, N, 48, c.ref);
-    err.push_back(std::abs(l - c.ref) / std::abs(c.ref));
-    std::printf("grains N = %2d (fluid M = 48)  relative error %.3e\n", N, err.back());
-  }
-  expect_spectral(Ns, err);  // observed 4.9e-4, 8.0e-5, 1.1e-5, 7.9e-7, 3.6e-8
+  for (int N : Ns)
+    err.push_back(std::abs(nearest_light_layer_eigenvalue(c.b, c.l, c.k_hat, N, 48, c.ref) -
+                           c.ref) /
+                  std::abs(c.ref));
+  vt::VerificationTable table(
+      "linear2d_light_layer_grains", "2D linear stability under the light fluid: grain intervals",
+      "Surface-mode eigenvalue at Lx = 8 cm under the light fluid (rho 1.5 kg/m3, eta 1e-3 Pa s, "
+      "Lz = 2 h0), N Chebyshev intervals in the grains with M = 48 in the fluid, relative error "
+      "against N = M = 48.",
+      {"N", "relative error", "local order"});
+  table.bound("the error at N = 24 < 1e-7");
+  expect_spectral(Ns, err, table);
   EXPECT_LT(err.back(), 1e-7);
+  table.write();
 }
 
 TEST(Linear2DLightLayerConvergence, FluidResolutionConvergesSpectrally) {
@@ -66,11 +81,17 @@ TEST(Linear2DLightLayerConvergence, FluidResolutionConvergesSpectrally) {
   const Case c = section7(0.02);
   const std::vector<int> Ms{2, 3, 4, 5, 6, 8};
   std::vector<double> err;
-  for (int M : Ms) {
-    const auto l = nearest_light_layer_eigenvalue(c.b, c.l, c.k_hat, 48, M, c.ref);
-    err.push_back(std::abs(l - c.ref) / std::abs(c.ref));
-    std::printf("fluid M = %d (grains N = 48)  relative error %.3e\n", M, err.back());
-  }
-  expect_spectral(Ms, err);  // observed 1.5e-4, 8.3e-6, 9.0e-7, 5.8e-8, 4.6e-9, 1.8e-11
+  for (int M : Ms)
+    err.push_back(std::abs(nearest_light_layer_eigenvalue(c.b, c.l, c.k_hat, 48, M, c.ref) -
+                           c.ref) /
+                  std::abs(c.ref));
+  vt::VerificationTable table(
+      "linear2d_light_layer_fluid", "2D linear stability under the light fluid: fluid intervals",
+      "The same at Lx = 2 cm (at 8 cm M = 8 is already at round-off): M intervals in the fluid "
+      "with N = 48 in the grains, relative error against N = M = 48.",
+      {"M", "relative error", "local order"});
+  table.bound("the error at M = 8 < 1e-10");
+  expect_spectral(Ms, err, table);
   EXPECT_LT(err.back(), 1e-10);
+  table.write();
 }

@@ -15,14 +15,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 
+#include "../support/verification_table.hpp"
 #include "initial_state.hpp"
 #include "solver.hpp"
 #include "steady_state.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
+namespace vt = granbench::testing;
 
 namespace {
 struct Errors {
@@ -50,17 +51,27 @@ Errors steady_error(int nz, const SolverParams& params, double h,
   return e;
 }
 
-void expect_order(const std::vector<Errors>& e, double min_order_max, double min_order_l1,
-                  const char* name) {
-  for (std::size_t n = 1; n < e.size(); ++n) {
+void expect_order(const std::vector<int>& nz, const std::vector<Errors>& e, double min_order_max,
+                  double min_order_l1, vt::VerificationTable& table) {
+  table.bound("observed order of the max error > " + vt::fixed(min_order_max, 1) +
+              ", of the L1 error > " + vt::fixed(min_order_l1, 1) + " between successive grids");
+  for (std::size_t n = 0; n < e.size(); ++n) {
+    if (n == 0) {
+      table.row({std::to_string(nz[n]), vt::sci(e[n].max), vt::dash(), vt::sci(e[n].l1),
+                 vt::dash()});
+      continue;
+    }
     const double p_max = std::log2(e[n - 1].max / e[n].max);
     const double p_l1 = std::log2(e[n - 1].l1 / e[n].l1);
-    std::printf("%s: max error %.3e -> %.3e (order %.2f), L1 %.3e -> %.3e (order %.2f)\n", name,
-                e[n - 1].max, e[n].max, p_max, e[n - 1].l1, e[n].l1, p_l1);
+    table.row({std::to_string(nz[n]), vt::sci(e[n].max), vt::fixed(p_max), vt::sci(e[n].l1),
+               vt::fixed(p_l1)});
     EXPECT_GT(p_max, min_order_max);
     EXPECT_GT(p_l1, min_order_l1);
   }
 }
+
+const std::vector<std::string> profile_columns{"nz (Lz = 2h)", "max error / u_s", "order",
+                                               "L1 error / u_s", "order"};
 }  // namespace
 
 TEST(SteadyProfiles, NewtonianFilmIsNusselt) {
@@ -74,10 +85,18 @@ TEST(SteadyProfiles, NewtonianFilmIsNusselt) {
   auto exact = [=](double z) {
     return gs / 0.5 * (rg * (h * z - 0.5 * z * z) + rl * (Lz - h) * z);
   };
+  const std::vector<int> nz{16, 32, 64};
   std::vector<Errors> e;
-  for (int nz : {16, 32, 64}) e.push_back(steady_error(nz, params, h, exact, 0.4));
-  expect_order(e, 1.8, 1.8, "Nusselt film");
+  for (int n : nz) e.push_back(steady_error(n, params, h, exact, 0.4));
+  vt::VerificationTable table(
+      "twod_steady_nusselt", "2D model: Newtonian film (Nusselt) under the light fluid",
+      "Steady u-profile after 0.4 s from the exact profile, 10 deg, eta = 0.5 Pa s, h = 4 mm; "
+      "errors on the granular u-faces relative to the surface speed.",
+      profile_columns);
+  table.bound("the max error on the finest grid < 1e-3");
+  expect_order(nz, e, 1.8, 1.8, table);
   EXPECT_LT(e.back().max, 1e-3);
+  table.write();
 }
 
 TEST(SteadyProfiles, BagnoldLayerRegularised) {
@@ -90,8 +109,16 @@ TEST(SteadyProfiles, BagnoldLayerRegularised) {
   ASSERT_TRUE(steady.well_posed);
   const double delta = params.rheology.rho_light * (Lz - h) / params.rheology.material.bulk_density();
   auto exact = [=](double z) { return steady.velocity_at_depth(z, h + delta); };  // (5.5)
+  const std::vector<int> nz{16, 32, 64};
   std::vector<Errors> e;
-  for (int nz : {16, 32, 64}) e.push_back(steady_error(nz, params, h, exact, 2.0));
-  expect_order(e, 1.4, 1.8, "Bagnold layer");
+  for (int n : nz) e.push_back(steady_error(n, params, h, exact, 2.0));
+  vt::VerificationTable table(
+      "twod_steady_bagnold", "2D model: Bagnold layer (5.5), regularised curve",
+      "Steady u-profile after 2 s from the exact profile, 24 deg, h = 4 mm; du/dz ~ (h - z)^(1/2) "
+      "at the surface limits the max-norm order to 3/2.",
+      profile_columns);
+  table.bound("the max error on the finest grid < 2e-3");
+  expect_order(nz, e, 1.4, 1.8, table);
   EXPECT_LT(e.back().max, 2e-3);
+  table.write();
 }

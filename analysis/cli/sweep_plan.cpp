@@ -1,0 +1,152 @@
+// The sweep's options and the SweepSpec they make; see sweep_plan.hpp.
+#include "sweep_plan.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace granbench::cli {
+
+namespace {
+
+std::vector<double> domain_lengths(const std::string& text) {
+  try {
+    return parse_range(text);
+  } catch (const std::invalid_argument&) {
+    throw UsageError("--Lx: expected A:B:N with 0 < A <= B and integer N in [1, 10000], got '" +
+                     text + "'");
+  }
+}
+
+// --model depthavg: clean linear runs against (7.11).
+depthavg::LinearRunParams linear_params(const SweepOptions& o) {
+  depthavg::LinearRunParams lp;
+  lp.nx = o.nx;
+  lp.tolerance = o.tolerance;
+  lp.t_end = o.t_end;
+  lp.reconstruction = depthavg::parse_reconstruction(o.depthavg.limiter);
+  lp.co_moving = o.depthavg.frame_speed == "linear";
+  return lp;
+}
+
+// An option that the chosen model would silently ignore is refused: the user meant something by
+// it, and a stored sweep would otherwise look as if it had been run with it.
+void refuse_options_that_do_not_apply(const SweepOptions& o, const CLI::App& app) {
+  struct Rule {
+    const char* option;
+    std::vector<std::string> models;  // the models it changes
+  };
+  const Rule rules[] = {{"--nx", {"depthavg"}},
+                        {"--tolerance", {"depthavg"}},
+                        {"--limiter", {"depthavg"}},
+                        {"--chi", {"depthavg", "both"}},
+                        {"--frame-speed", {"depthavg", "both"}},
+                        {"--resolution", {"twod", "both"}},
+                        {"--viscosity-passes", {"twod", "both"}}};
+  for (const Rule& r : rules) {
+    const CLI::Option* opt = app.get_option_no_throw(r.option);
+    if (opt == nullptr || opt->count() == 0) continue;
+    if (std::find(r.models.begin(), r.models.end(), o.model) != r.models.end()) continue;
+    std::string list;
+    for (const auto& m : r.models) list += (list.empty() ? "" : " or ") + ("--model " + m);
+    throw UsageError(std::string(r.option) + ": does not apply to --model " + o.model +
+                     "; valid only with " + list);
+  }
+}
+
+}  // namespace
+
+void add_sweep_options(CLI::App& sub, SweepOptions& o) {
+  add_flow_options(sub, o.flow);
+  sub.add_option("--model", o.model, "model {depthavg,twod,both}")
+      ->check(one_of({"depthavg", "twod", "both"}))
+      ->capture_default_str();
+  sub.add_option("--Lx", o.Lx, "domain lengths A:B:N [m] (N evenly spaced from A to B)")
+      ->capture_default_str();
+  sub.add_option("--jobs", o.jobs, "parallel threads per process, in [1, 256]")
+      ->check(CLI::Range(1u, 256u))
+      ->capture_default_str();
+  sub.add_option("--nx", o.nx, "cells per domain (--model depthavg), in [16, 65536]")
+      ->check(CLI::Range(std::size_t{16}, std::size_t{65536}))
+      ->capture_default_str();
+  sub.add_option("--tolerance", o.tolerance,
+                 "CVODE tolerance relative to the seeded perturbation (amplitude 1e-4 h0) "
+                 "(--model depthavg), in (0, 1)")
+      ->check(open_range(0.0, 1.0))
+      ->capture_default_str();
+  sub.add_option("--t-end", o.t_end,
+                 "run length per point [s], > 0; default: max(4 periods, 0.5/|growth|), <= 5 s")
+      ->check(positive());
+  sub.add_option("--resolution", o.resolution,
+                 "2D grid of --model twod|both {coarse: 80x32, default: 160x64, fine: 320x128}")
+      ->check(one_of({"coarse", "default", "fine"}))
+      ->capture_default_str();
+  sub.add_option("--viscosity-passes", o.viscosity_passes,
+                 "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
+      ->check(CLI::Range(1, 4))
+      ->capture_default_str();
+  add_depthavg_options(sub, o.depthavg);
+  add_output_options(sub, o.output);
+}
+
+const std::map<std::string, std::string>& sweep_options_without_effect_on_results() {
+  static const std::map<std::string, std::string> neutral = {
+      {"--help", "prints the help"},
+      {"--model", "chooses the points; each is stored with its model"},
+      {"--Lx", "chooses the points; each is stored with its Lx"},
+      {"--jobs", "threads only; every point is computed alone"},
+      {"--out", "where the points go"},
+      {"--plot", "the figure of the points"},
+      {"--json", "how the result is printed"},
+      {"--quiet", "progress only"},
+      {"--config", "read into the other options"}};
+  return neutral;
+}
+
+SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
+  refuse_options_that_do_not_apply(o, app);
+  SweepPlan plan;
+  SweepSpec& spec = plan.spec;
+  spec.chute.material = o.flow.material;
+  spec.chute.curve = o.flow.curve_kind();
+  spec.chute.angle_deg = o.flow.angle_deg;
+  spec.chute.h0 = o.flow.h0;
+  (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
+  if (o.depthavg.frame_speed != "linear" && o.depthavg.frame_speed != "0")
+    throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +
+                     "' is not allowed for sweep; valid values {0, linear}");
+  spec.Lx = domain_lengths(o.Lx);
+  spec.depthavg = o.model != "twod";
+  spec.twod = o.model != "depthavg";
+  spec.depthavg_settings.chi = parse_chi(o.depthavg.chi);
+  spec.depthavg_settings.co_moving = o.depthavg.frame_speed == "linear";
+  spec.jobs = o.jobs;
+  nlohmann::json& settings = plan.settings;
+  settings = {{"model", o.model}, {"chi", spec.depthavg_settings.chi}};
+  std::ostringstream title;
+  title << o.model << " sweep over " << spec.Lx.size()
+        << " domain lengths, chi = " << spec.depthavg_settings.chi << ", " << o.flow.curve
+        << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m";
+  if (o.model == "depthavg") {
+    spec.depthavg_linear = linear_params(o);
+    settings.update(
+        {{"nx", o.nx}, {"tolerance", o.tolerance}, {"frame_speed", o.depthavg.frame_speed}});
+    title << ", nx = " << o.nx;
+  } else {
+    spec.chute.t_end = o.t_end > 0.0 ? o.t_end : 2.0;
+    spec.depthavg_settings.nx = 256;
+    spec.twod_settings.nx = grid_preset(o.resolution).twod_nx;
+    spec.twod_settings.nz = grid_preset(o.resolution).twod_nz;
+    spec.twod_settings.viscosity_passes = o.viscosity_passes;
+    settings.update({{"frame_speed", o.depthavg.frame_speed},
+                     {"resolution", o.resolution},
+                     {"viscosity_passes", o.viscosity_passes},
+                     {"twod_nx", spec.twod_settings.nx},
+                     {"twod_nz", spec.twod_settings.nz},
+                     {"t_end", spec.chute.t_end}});
+    title << ", 2D grid " << spec.twod_settings.nx << "x" << spec.twod_settings.nz;
+  }
+  plan.title = title.str();
+  return plan;
+}
+
+}  // namespace granbench::cli

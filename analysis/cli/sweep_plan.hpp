@@ -1,0 +1,52 @@
+// `granbench sweep`'s options and what they make of a sweep: the SweepSpec the engine runs, the
+// JSON keys and the table's title (cmd_sweep.cpp registers the subcommand with these). Kept apart
+// from the command so that a test can enumerate the registered options and check that every one
+// that changes a result is stored with the points (sweep.hpp: stored_settings), or refused for a
+// model it does not apply to, or listed here as changing no result.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "cli_common.hpp"
+#include "run_model.hpp"
+#include "sweep.hpp"
+
+namespace granbench::cli {
+
+struct SweepOptions {
+  FlowOptions flow;
+  OutputOptions output;
+  DepthAvgOptions depthavg;
+  std::string model = "depthavg";
+  std::string Lx = "0.03:0.4:12";
+  unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+  std::size_t nx = 192;
+  double tolerance = 1e-6;
+  double t_end = 0.0;
+  std::string resolution = "default";  // 2D grid of --model twod|both (32 cells per h0)
+  int viscosity_passes = 1;           // of --model twod|both
+};
+
+// Registers the options on `app` (the sweep subcommand).
+void add_sweep_options(CLI::App& app, SweepOptions& o);
+
+struct SweepPlan {
+  SweepSpec spec;
+  nlohmann::json settings;  // the command's own keys for the JSON
+  std::string title;        // the table's first line
+};
+// After parsing `app` (for which options were given). UsageError for an option that does not
+// apply to the chosen --model, or for a bad value.
+SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app);
+
+// The options that change no stored result, each with the reason: how the work is shared, where
+// it goes, how it is shown, and the two that choose the points (each point is stored with its
+// model and its Lx).
+const std::map<std::string, std::string>& sweep_options_without_effect_on_results();
+
+}  // namespace granbench::cli

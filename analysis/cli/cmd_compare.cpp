@@ -86,7 +86,13 @@ void run_compare(const CompareOptions& o) {
   c.base = chute.steady();
   // Both models at once (run_both shares the cores); the exact theories meanwhile on this thread.
   auto runs = std::async(std::launch::async, [&] { return run_both(chute, depthavg, twod, ctl); });
-  c.theory = exact_theories(chute);
+  try {
+    c.theory = exact_theories(chute);
+  } catch (const std::runtime_error& e) {
+    // A flow outside the reach of the linear theories (a domain of 1e9 m, a 29 m deep layer) is
+    // bad input, not an internal error; the runs end with this scope.
+    throw UsageError("--Lx/--h0: no exact linear theory for this flow: " + std::string(e.what()));
+  }
   std::tie(c.depthavg, c.twod) = runs.get();
   if (show) std::cerr << "\n";
   // Each model's seeded wave is the one nearest its own theory's phase speed.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "run_status.hpp"
 #include "cvode_integrator.hpp"
 #include "params.hpp"
 #include "rhs.hpp"
@@ -19,9 +20,7 @@
 
 namespace granbench::depthavg {
 
-// Failed: an exception other than divergence left the time loop (a hook, memory); the samples
-// taken up to then are kept and the message says when and why.
-enum class RunStatus { Completed, Interrupted, Diverged, Failed };
+using granbench::RunStatus;  // common/run_status.hpp
 
 struct RunResult {
   SurfaceSeries series;

@@ -24,20 +24,6 @@ bool reached(double t, double target) {
 
 }  // namespace
 
-const char* run_status_name(RunStatus s) {
-  switch (s) {
-    case RunStatus::Completed:
-      return "completed";
-    case RunStatus::Interrupted:
-      return "interrupted";
-    case RunStatus::Diverged:
-      return "diverged";
-    case RunStatus::Failed:
-      return "failed";
-  }
-  return "failed";
-}
-
 double divergence_speed_limit(double u_surface) { return std::max(50.0, 10.0 * u_surface); }
 
 RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,

@@ -34,6 +34,7 @@
 #include <optional>
 #include <string>
 
+#include "run_status.hpp"
 #include "diagnostics.hpp"
 #include "solver.hpp"
 #include "surface_series.hpp"
@@ -60,8 +61,7 @@ struct RunHooks {
   const std::atomic<bool>* stop = nullptr;  // read after each sample
 };
 
-enum class RunStatus { Completed, Interrupted, Diverged, Failed };
-const char* run_status_name(RunStatus s);  // "completed", "interrupted", "diverged", "failed"
+using granbench::RunStatus;  // common/run_status.hpp
 
 struct RunResult {
   RunStatus status = RunStatus::Completed;

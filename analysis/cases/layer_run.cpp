@@ -85,7 +85,7 @@ LayerRunRecord run_layer(const LayerRunSpec& spec, const LayerRunProgress& progr
   const twod::RunResult result = twod::run(
       solver, SurfaceSeries::uniform_grid(spec.Lx, static_cast<std::size_t>(spec.nx), spec.h0),
       schedule, hooks);
-  r.status = twod::run_status_name(result.status);
+  r.status = run_status_name(result.status);
   r.message = result.message;
   const twod::RunStatistics st = solver.statistics();
   r.t_reached = solver.state().t;

@@ -17,6 +17,7 @@
 #include "compare.hpp"
 #include "compare_output.hpp"
 #include "measurement.hpp"
+#include "compare_report.hpp"
 #include "output_checks.hpp"
 #include "run_model.hpp"
 
@@ -40,93 +41,6 @@ struct CompareOptions {
   int viscosity_passes = 1;
 };
 
-nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
-  nlohmann::json j = to_json(m);  // the measurement, spelled as in every command
-  j.update({
-      {"steps", r.steps},
-      {"wall_seconds", r.wall_seconds},
-      {"mass_error", r.mass_error},
-      {"flux", r.flux},
-      {"completed", r.outcome == RunOutcome::Completed},
-      {"run_command", r.run_command}});
-  if (!r.message.empty()) j["message"] = r.message;
-  if (r.model == "twod") {
-    j["I_range"] = {r.I_min, r.I_max};
-    j["illposed_fraction"] = r.illposed_fraction;
-  }
-  return j;
-}
-
-// One measured row: growth and phase speed with their deviation from the reference theory, or
-// "n/a" and the reason when there was no clean window; then any other wave carrying more than 10 %
-// of the seeded wave's amplitude at the window start, on its own line.
-void print_measured(const char* label, const SurfaceMeasurement& m, const TheoryValue& ref,
-                    const char* ref_name) {
-  auto rel = [](double a, double b) { return 100.0 * (a - b) / std::fabs(b); };
-  std::cout << std::setprecision(4) << "  " << std::left << std::setw(25) << label << std::right;
-  if (!m.found()) {
-    std::cout << std::setw(12) << "n/a" << std::setw(20) << "n/a"
-              << "   (not measured: " << m.reason << ")\n";
-    return;
-  }
-  std::cout << std::setw(12) << m.growth_rate << std::setw(20) << m.phase_speed << "   vs "
-            << ref_name << ": " << std::setprecision(2) << std::showpos
-            << rel(m.growth_rate, ref.growth_rate) << " %, " << rel(m.phase_speed, ref.phase_speed)
-            << " %\n"
-            << std::noshowpos;
-  const double seeded = m.modes[m.seeded].amplitude;
-  for (std::size_t i = 0; i < m.modes.size(); ++i) {
-    if (i == m.seeded || !(m.modes[i].amplitude > 0.1 * seeded)) continue;
-    std::cout << std::setprecision(4) << "    + another wave         " << std::setw(12)
-              << m.modes[i].growth_rate << std::setw(20) << m.modes[i].phase_speed
-              << "   amplitude " << std::setprecision(0) << 100.0 * m.modes[i].amplitude / seeded
-              << " % of the seeded wave's at t = " << std::setprecision(3) << m.t_first << " s\n";
-  }
-}
-
-void print_table(const Comparison& c) {
-  const auto& t = c.theory;
-  std::cout << std::setprecision(4) << std::fixed << "granbench compare: Lx = " << c.chute.Lx
-            << " m, angle " << c.chute.angle_deg << " deg, h0 = " << c.chute.h0 << " m, "
-            << curve_name(c.chute.curve) << " curve, k_hat = " << t.k_hat << "\n\n"
-            << "                           growth [1/s]   phase speed [m/s]\n"
-            << "  exact (7.11), chi = 1    " << std::setw(12) << t.exact.growth_rate
-            << std::setw(20) << t.exact.phase_speed << "\n"
-            << "  exact, chi = 5/4         " << std::setw(12) << t.exact_bagnold.growth_rate
-            << std::setw(20) << t.exact_bagnold.phase_speed << "\n"
-            << "  exact 2D linear          " << std::setw(12) << t.exact_2d.growth_rate
-            << std::setw(20) << t.exact_2d.phase_speed << "\n";
-  print_measured("depthavg (measured)", c.depthavg_measured.spectral, t.exact, "(7.11)");
-  print_measured("twod (measured)", c.twod_measured.spectral, t.exact_2d, "2D linear");
-  for (const auto* m : {&c.depthavg_measured, &c.twod_measured}) {
-    const char* name = m == &c.depthavg_measured ? "depthavg" : "twod";
-    const SurfaceMeasurement& w = m->spectral;
-    std::cout << std::setprecision(3) << "  " << name;
-    if (w.found())
-      std::cout << " fitted over t = [" << w.t_first << ", " << w.t_last << "] s, "
-                << w.modes.size() << " wave(s), relative residual " << std::scientific
-                << std::setprecision(1) << w.relative_residual << std::fixed
-                << std::setprecision(3);
-    else
-      std::cout << " growth not measured";
-    if (whole_run_fitted(*m))
-      std::cout << "; whole-run fit of ln|h_k| " << m->whole_run.slope
-                << " 1/s (R^2 = " << m->whole_run.r2 << ")\n";
-    else
-      std::cout << "; whole-run fit of ln|h_k| n/a (fewer than 3 samples)\n";
-    if (!w.note.empty()) std::cout << "  " << name << ": " << w.note << "\n";
-    if (m->saturated && m->wave)
-      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << m->wave->speed
-                << " m/s, amplitude " << m->final_amplitude * 1e3 << " mm\n";
-  }
-  std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
-            << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps
-            << " steps), 2D mass error " << std::scientific << std::setprecision(1)
-            << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3)
-            << c.twod.I_min << ", " << c.twod.I_max << "], ill-posed fraction "
-            << c.twod.illposed_fraction << "\n";
-}
-
 void run_compare(const CompareOptions& o) {
   ChuteCase chute;
   chute.material = o.flow.material;
@@ -145,6 +59,12 @@ void run_compare(const CompareOptions& o) {
   twod.nx = o.nx > 0 ? o.nx : res.twod_nx;
   twod.nz = o.nz > 0 ? o.nz : res.twod_nz;
   twod.viscosity_passes = o.viscosity_passes;
+  // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of
+  // this tool on a workstation should ask for; beyond it the allocation would fail mid-run.
+  constexpr long kMaxTwodCells = 1L << 22;
+  if (long(twod.nx) * twod.nz > kMaxTwodCells)
+    throw UsageError("--nx: " + std::to_string(twod.nx) + " x " + std::to_string(twod.nz) +
+                     " 2D cells; valid range nx * nz <= " + std::to_string(kMaxTwodCells));
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
@@ -218,8 +138,9 @@ void run_compare(const CompareOptions& o) {
   for (const ModelRun* r : {&c.depthavg, &c.twod}) {
     if (r->outcome == RunOutcome::Interrupted)
       throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
-    if (r->outcome == RunOutcome::Diverged)
-      throw CommandFailed(r->model + " diverged: " + r->message + "; data up to then in " + h5,
+    if (r->outcome == RunOutcome::Diverged || r->outcome == RunOutcome::Failed)
+      throw CommandFailed(r->model + " " + run_status_name(r->outcome) + ": " + r->message +
+                              "; data up to then in " + h5,
                           kExitRunFailed);
   }
 }
@@ -244,9 +165,14 @@ void add_compare_command(CLI::App& app) {
   sub->add_option("--resolution", o->resolution,
                   "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
       ->check(one_of({"coarse", "default", "fine"}))->capture_default_str();
-  sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), > 0")->check(CLI::PositiveNumber);
-  sub->add_option("--nz", o->nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), > 0")->check(CLI::PositiveNumber);
-  sub->add_option("--nx-depthavg", o->nx_depthavg, "depth-averaged cells (overrides --resolution), > 0")->check(CLI::PositiveNumber);
+  // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
+  sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), in [8, 65536]")
+      ->check(CLI::Range(8, 65536));
+  sub->add_option("--nz", o->nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), in [4, 4096]")
+      ->check(CLI::Range(4, 4096));
+  sub->add_option("--nx-depthavg", o->nx_depthavg,
+                  "depth-averaged cells (overrides --resolution), in [8, 1048576]")
+      ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20));
   sub->add_option("--frame-speed", o->frame_speed,
                   "depth-averaged model's frame {linear,0}: moving at the (7.11) phase speed, or "
                   "the lab frame; output is in the lab frame")

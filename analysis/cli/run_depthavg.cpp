@@ -85,10 +85,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   const auto last_h = r.series.h_at(r.series.nt() - 1);
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / static_cast<double>(last_h.size());
-  const char* status = r.status == depthavg::RunStatus::Completed     ? "completed"
-                       : r.status == depthavg::RunStatus::Interrupted ? "interrupted"
-                       : r.status == depthavg::RunStatus::Diverged    ? "diverged"
-                                                                      : "failed";
+  const char* status = run_status_name(r.status);
 
   nlohmann::json j = {{"model", "depthavg"},
                       {"status", status},

@@ -13,11 +13,13 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 
 #include "checkpoint.hpp"
 #include "eigenmode_seed.hpp"
 #include "initial_state.hpp"
 #include "linear2d_eigenmode.hpp"
+#include "output.hpp"
 #include "output_checks.hpp"
 #include "run_output.hpp"
 #include "run_twod.hpp"
@@ -78,6 +80,11 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
                      : !o.output.out.empty() ? replace_extension(o.output.out, ".checkpoint.h5")
                                              : std::string("twod.checkpoint.h5");
   if (!files.out.empty()) {
+    try {  // a name ParaView's XDMF readers cannot open is bad input, refused before the run
+      twod::check_xdmf_file_name(std::filesystem::path(files.out).filename().string());
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
     require_writable(files.out, "--out");
     require_writable(replace_extension(files.out, ".xdmf"), "--out");
   }

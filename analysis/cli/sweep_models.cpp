@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "mpi_session.hpp"
+#include "output_checks.hpp"
 #include "output_lock.hpp"
 #include "run_model.hpp"
 
@@ -148,6 +149,7 @@ void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohma
   // Points are kept in the HDF5 file as they finish: that file is what a re-run resumes from.
   const bool keep_data = !output.out.empty();
   spec.out = keep_data ? output.out : (!output.plot.empty() ? output.plot + ".data.h5" : "");
+  if (!spec.out.empty()) require_writable(spec.out, keep_data ? "--out" : "--plot");  // before work
   const auto start = std::chrono::steady_clock::now();
   const SharedSweep s = run_shared(spec, output);
   const double wall =

@@ -39,9 +39,7 @@ void write_measurement(H5Writer& out, const std::string& g, const ModelRun& r,
   out.attribute(g, "mass_error", r.mass_error);
   out.attribute(g, "flux", r.flux);
   out.attribute(g, "seeded_growth_rate", r.seeded_growth_rate);
-  out.attribute(g, "outcome", std::string(r.outcome == RunOutcome::Completed     ? "completed"
-                                          : r.outcome == RunOutcome::Interrupted ? "interrupted"
-                                                                                 : "diverged"));
+  out.attribute(g, "outcome", std::string(run_status_name(r.outcome)));
   if (!r.message.empty()) out.attribute(g, "message", r.message);
 }
 

@@ -71,9 +71,7 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   ModelRun m;
   m.model = "depthavg";
   m.series = std::move(r.series);
-  m.outcome = r.status == depthavg::RunStatus::Completed     ? RunOutcome::Completed
-              : r.status == depthavg::RunStatus::Interrupted ? RunOutcome::Interrupted
-                                                             : RunOutcome::Diverged;
+  m.outcome = r.status;
   m.message = r.message;
   m.steps = r.stats.steps;
   m.wall_seconds = r.wall_seconds;
@@ -125,6 +123,7 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
   params.rheology.rho_light = s.rho_light;
   params.rheology.eta_light = s.eta_light;
   params.viscosity_passes = s.viscosity_passes;
+  params.velocity_limit = twod::divergence_speed_limit(base.u_surface);  // as `run` (run.hpp)
   params.threads = partner_done ? std::max(1, s.threads - 1) : s.threads;
 
   ModelRun m;
@@ -149,12 +148,8 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
   twod::RunResult r =
       twod::run(solver, SurfaceSeries::uniform_grid(c.Lx, static_cast<std::size_t>(s.nx), c.h0),
                 schedule, hooks);
-  // Any other failure (a linear solve, memory) stays an error here: ModelRun has no outcome for
-  // it, and a comparison with half a model is no result.
-  if (r.status == twod::RunStatus::Failed) throw std::runtime_error("twod run: " + r.message);
-  m.outcome = r.status == twod::RunStatus::Completed     ? RunOutcome::Completed
-              : r.status == twod::RunStatus::Interrupted ? RunOutcome::Interrupted
-                                                         : RunOutcome::Diverged;
+  // A failure (a linear solve, memory) keeps the samples up to it, like an interruption.
+  m.outcome = r.status;
   m.message = r.message;
   m.series = std::move(r.series);
   m.wall_seconds = r.wall_seconds;

@@ -13,11 +13,12 @@
 #include "chute_case.hpp"
 #include "grid.hpp"
 #include "parameters.hpp"
+#include "run_status.hpp"
 #include "surface_series.hpp"
 
 namespace granbench {
 
-enum class RunOutcome { Completed, Interrupted, Diverged };
+using RunOutcome = RunStatus;  // common/run_status.hpp
 
 struct ModelRun {
   std::string model;  // "depthavg" or "twod"

@@ -65,3 +65,16 @@ TEST(CliConventions, SweepOptionsThatDoNotApplyToTheModelAreRefused) {
 }
 
 }  // namespace
+
+// compare's grids and cases that no run can take are refused before any work (qa.md: compare
+// --nx 1 and huge grids ended in late internal errors or bad_alloc; jop at 29.1 deg and a 1e9 m
+// domain in exit 1), and so is a 2D output name that ParaView's XDMF readers cannot open.
+TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
+  const std::string dir = ::testing::TempDir();
+  const std::string quick = " --t-end 0.05 --quiet --out " + dir + "gb_conv_c.h5 --plot " + dir + "gb_conv_c.png";
+  expect_refused("compare --nx 1" + quick, "--nx:", {"8"});
+  expect_refused("compare --nx 60000 --nz 4000" + quick, "--nx:", {"nx * nz"});
+  expect_refused("compare --curve jop --angle 29.1 --Lx 0.08" + quick, "--Lx:", {"2D linear"});
+  expect_refused("compare --Lx 1e9 --h0 29.1" + quick, "--Lx:", {"2D linear"});
+  expect_refused("run --model twod --t-end 0.01 --quiet --out 'a b.h5'", "--out:", {"white space"});
+}

@@ -2,10 +2,11 @@
 //
 // 1. The rollwave case of §7: Lx = 0.08 m, zeta = 28.5 deg, h0 = 4 mm, a0 = 0.2 mm (7.2),
 //    regularised curve (6.3)-(6.4), nx = 512, t_end = 10 s, the settings of `granbench run`
-//    (central reconstruction, rtol 1e-6, atol 1e-10, BDF order <= 2 (5 in the lab frame), block-band-preconditioned
-//    SPGMR, the frame moving at the linear phase speed): wall time, CVODE steps, right-hand-side
-//    evaluations, linear iterations. Target < 1 s on one core. Also at rtol 1e-4 (atol 1e-8),
-//    and in the lab frame (`--frame-speed 0`). docs/performance.md has the time error of each.
+//    (central reconstruction, rtol 1e-6, atol 1e-10, BDF order <= 2 (5 in the lab frame),
+//    block-band-preconditioned SPGMR, the frame moving at the linear phase speed): wall time, CVODE
+//    steps, right-hand-side evaluations, linear iterations. Target < 1 s on one core. Also at rtol
+//    1e-4 (atol 1e-8), and in the lab frame (`--frame-speed 0`). docs/performance.md has the time
+//    error of each.
 // 2. A linear-regime sweep of 24 domain lengths (0.03 .. 0.4 m, eigenmode seeding, the settings
 //    of `granbench sweep`) on 2 threads, lab and co-moving frames: wall time. Target < 10 s.
 //
@@ -13,19 +14,19 @@
 // (--skip-lab skips the slow lab-frame rollwave, --skip-sweep the two sweeps)
 #include <atomic>
 #include <chrono>
-#include <ctime>
 #include <cstring>
+#include <ctime>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "analysis/comparison/depthavg_linear_run.hpp"
+#include "analysis/spectral/wave_speed.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 #include "depthavg/initial_state.hpp"
-#include "depthavg/linear_run.hpp"
 #include "depthavg/solver.hpp"
-#include "dispersion.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
-#include "wave_speed.hpp"
 
 using namespace granbench;
 
@@ -122,8 +123,10 @@ nlohmann::json sweep(const SteadyState& base, const MuCurve& curve, bool co_movi
 int main(int argc, char** argv) {
   bool skip_lab = false, skip_sweep = false;
   for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--skip-lab") == 0) skip_lab = true;
-    else if (std::strcmp(argv[i], "--skip-sweep") == 0) skip_sweep = true;
+    if (std::strcmp(argv[i], "--skip-lab") == 0)
+      skip_lab = true;
+    else if (std::strcmp(argv[i], "--skip-sweep") == 0)
+      skip_sweep = true;
     else {
       std::cerr << "usage: bench_depthavg_rollwave [--skip-lab] [--skip-sweep]\n";
       return 2;

@@ -33,16 +33,16 @@
 #include <numbers>
 #include <string>
 
-#include "diagnostics.hpp"
-#include "initial_state.hpp"
-#include "linear2d_base_state.hpp"
-#include "linear2d_chebyshev.hpp"
-#include "linear2d_operator.hpp"
-#include "linear2d_spectrum.hpp"
-#include "linear_stability_2d.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "analysis/linear2d/base_state.hpp"
+#include "analysis/linear2d/chebyshev.hpp"
+#include "analysis/linear2d/linear_stability_2d.hpp"
+#include "analysis/linear2d/operator.hpp"
+#include "analysis/linear2d/spectrum.hpp"
+#include "common/steady_state.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using cd = std::complex<double>;

@@ -25,11 +25,11 @@
 #include <thread>
 #include <vector>
 
-#include "diagnostics.hpp"
-#include "initial_state.hpp"
-#include "parallel.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/parallel.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
@@ -62,7 +62,8 @@ double triad_bandwidth(int threads) {
     parallel([&](std::size_t lo, std::size_t hi) {
       for (std::size_t i = lo; i < hi; ++i) a[i] = b[i] + s * c[i];
     });
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    best = std::min(best,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   volatile double sink = a[n / 2];  // keep the stores
   (void)sink;

@@ -1,5 +1,5 @@
 // The table of dataset units and names; see dataset_units.hpp.
-#include "dataset_units.hpp"
+#include "common/dataset_units.hpp"
 
 #include <map>
 #include <utility>

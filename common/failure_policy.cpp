@@ -1,5 +1,5 @@
 // The failure policy of failure_policy.hpp: the signal guard, the exit-code table, the path probe.
-#include "failure_policy.hpp"
+#include "common/failure_policy.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -58,9 +58,13 @@ InterruptGuard::~InterruptGuard() {
   std::signal(SIGINT, previous_handler(SIGINT));
 }
 
-const std::atomic<bool>* InterruptGuard::flag() const { return &interrupt_flag(); }
+const std::atomic<bool>* InterruptGuard::flag() const {
+  return &interrupt_flag();
+}
 
-int InterruptGuard::signal() const { return caught_signal(); }
+int InterruptGuard::signal() const {
+  return caught_signal();
+}
 
 int InterruptGuard::exit_code() const {
   const int sig = caught_signal();

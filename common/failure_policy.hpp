@@ -13,9 +13,9 @@ namespace granbench {
 // script sees the same code as for a process killed by that signal, but the data is kept.
 enum ExitCode : int {
   kExitOk = 0,
-  kExitInternal = 1,     // a defect: an internal error escaped (please report it)
-  kExitUsage = 2,        // bad input or an unwritable path, found before any work
-  kExitRunFailed = 3,    // the run diverged or failed; data up to the last good sample kept
+  kExitInternal = 1,   // a defect: an internal error escaped (please report it)
+  kExitUsage = 2,      // bad input or an unwritable path, found before any work
+  kExitRunFailed = 3,  // the run diverged or failed; data up to the last good sample kept
   kExitSigint = 128 + SIGINT,
   kExitSigterm = 128 + SIGTERM,
 };

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "hdf5_file.hpp"
+#include "common/hdf5_file.hpp"
 
 namespace granbench {
 

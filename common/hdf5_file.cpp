@@ -1,5 +1,5 @@
 // H5Writer: HDF5 output written to "<path>.partial" and renamed into place on close().
-#include "hdf5_file.hpp"
+#include "common/hdf5_file.hpp"
 
 #include <hdf5.h>
 
@@ -9,8 +9,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "dataset_units.hpp"
-#include "provenance.hpp"
+#include "common/dataset_units.hpp"
+#include "common/provenance.hpp"
 
 namespace granbench {
 

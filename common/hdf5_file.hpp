@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "material.hpp"
-#include "surface_series.hpp"
+#include "common/material.hpp"
+#include "common/surface_series.hpp"
 
 namespace granbench {
 
@@ -65,6 +65,7 @@ bool h5_has_attribute(const std::string& path, const std::string& object, const 
 std::vector<std::string> h5_dataset_paths(const std::string& path);
 SurfaceSeries read_surface_series(const std::string& path, const std::string& group);
 // A numeric attribute of an object; throws std::runtime_error when absent (hdf5_copy.cpp).
-double h5_read_attribute(const std::string& path, const std::string& object, const std::string& key);
+double h5_read_attribute(const std::string& path, const std::string& object,
+                         const std::string& key);
 
 }  // namespace granbench

@@ -8,15 +8,15 @@
 namespace granbench {
 
 struct Material {
-  double mu_s = 0.342;      // static friction coefficient, tan(zeta_s)          (table 1)
-  double mu_d = 0.557;      // dynamic friction coefficient, tan(zeta_d)         (table 1)
-  double I0 = 0.069;        // inertial-number scale of the Jop curve (2.12)     (table 1)
-  double d = 1.43e-4;       // grain diameter [m]                                (table 1)
-  double phi = 0.6;         // solids volume fraction                            (table 1)
-  double rho_star = 2500.0; // intrinsic grain density [kg m^-3] (glass)
-  double g = 9.81;          // gravitational acceleration [m s^-2]
-  double mu_inf = 0.05;     // high-I coefficient of the regularised curve (6.3)
-  double alpha = 1.9;       // low-I regularisation constant of (5.2) and (6.3), alpha < 2
+  double mu_s = 0.342;       // static friction coefficient, tan(zeta_s)          (table 1)
+  double mu_d = 0.557;       // dynamic friction coefficient, tan(zeta_d)         (table 1)
+  double I0 = 0.069;         // inertial-number scale of the Jop curve (2.12)     (table 1)
+  double d = 1.43e-4;        // grain diameter [m]                                (table 1)
+  double phi = 0.6;          // solids volume fraction                            (table 1)
+  double rho_star = 2500.0;  // intrinsic grain density [kg m^-3] (glass)
+  double g = 9.81;           // gravitational acceleration [m s^-2]
+  double mu_inf = 0.05;      // high-I coefficient of the regularised curve (6.3)
+  double alpha = 1.9;        // low-I regularisation constant of (5.2) and (6.3), alpha < 2
   // Kamrin & Koval (2014) local curve (5.1): friction at I = 0 and decay scale c_K. The paper
   // gives no values; these are illustrative defaults chosen so that mu_0 < mu_s.
   double kk_mu0 = 0.25;

@@ -1,13 +1,13 @@
 // mu(I) curves: values, analytic derivatives and inverses. See mu_curves.hpp for the equations.
-#include "mu_curves.hpp"
+#include "common/mu_curves.hpp"
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "ill_posedness.hpp"
-#include "neutral_points.hpp"
-#include "root_finding.hpp"
+#include "common/ill_posedness.hpp"
+#include "common/neutral_points.hpp"
+#include "common/root_finding.hpp"
 
 namespace granbench {
 
@@ -97,7 +97,8 @@ MuCurve::MuCurve(CurveKind kind, const Material& material, double h0)
 double MuCurve::upper_branch(double I) const {
   const Material& m = material_;
   if (kind_ == CurveKind::KamrinKoval)
-    return m.mu_s + (m.mu_d - m.mu_s) / m.I0 * I + (m.kk_mu0 - m.mu_s) * std::exp(-I / m.kk_cK);  // (5.1)
+    return m.mu_s + (m.mu_d - m.mu_s) / m.I0 * I +
+           (m.kk_mu0 - m.mu_s) * std::exp(-I / m.kk_cK);  // (5.1)
   return (m.mu_s * m.I0 + m.mu_d * I + quad_ * I * I) / (m.I0 + I);
 }
 
@@ -111,8 +112,8 @@ double MuCurve::upper_branch_derivative(double I) const {
 }
 
 double MuCurve::mu(double I) const {
-  if (I <= 0.0) return (kind_ == CurveKind::Regularised || kind_ == CurveKind::LowI) ? 0.0
-                                                                                   : upper_branch(0.0);
+  if (I <= 0.0)
+    return (kind_ == CurveKind::Regularised || kind_ == CurveKind::LowI) ? 0.0 : upper_branch(0.0);
   if (I <= junction_I_) return std::sqrt(material_.alpha / std::log(A_minus_ / I));  // (5.2), (6.3)
   return upper_branch(I);
 }
@@ -150,8 +151,7 @@ double MuCurve::inverse(double target) const {
   }
   if (residual(s_lo) > 0.0) {
     std::ostringstream msg;
-    msg << "mu = " << target << " is below the values the " << curve_name(kind_)
-        << " curve takes";
+    msg << "mu = " << target << " is below the values the " << curve_name(kind_) << " curve takes";
     throw CurveRangeError(msg.str());
   }
   return std::exp(brent_root(residual, s_lo, s_hi));

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-#include "material.hpp"
+#include "common/material.hpp"
 
 namespace granbench {
 

@@ -1,14 +1,13 @@
 // Neutral inertial numbers (roots of C(I), (3.9)) and the neutral curves (4.2)-(4.5).
-#include "neutral_points.hpp"
+#include "common/neutral_points.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "ill_posedness.hpp"
-#include "root_finding.hpp"
+#include "common/ill_posedness.hpp"
+#include "common/root_finding.hpp"
 
 namespace granbench {
-
 
 std::vector<double> neutral_points(const std::function<double(double)>& mu,
                                    const std::function<double(double)>& dmu_dI, double I_lo,
@@ -49,8 +48,10 @@ WellPosedness analyse_well_posedness(const MuCurve& curve) {
   // Curves with mu -> 0 as I -> 0 stay well posed down to I = 0 ((4.1) and §5.1).
   double lo = well_posed ? (curve.mu_min() == 0.0 ? 0.0 : kIlo) : 0.0;
   for (double r : w.neutral) {
-    if (well_posed) w.intervals.emplace_back(lo, r);
-    else lo = r;
+    if (well_posed)
+      w.intervals.emplace_back(lo, r);
+    else
+      lo = r;
     well_posed = !well_posed;
   }
   if (well_posed) w.intervals.emplace_back(lo, kIhi);
@@ -70,7 +71,7 @@ double neutral_f_plus(double mu) {
 }
 
 double neutral_f_minus(double mu) {
-  const double s = std::sqrt(std::max(0.0, 4.0 - 2.0 * mu * mu));  // real for mu <= sqrt 2
+  const double s = std::sqrt(std::max(0.0, 4.0 - 2.0 * mu * mu));           // real for mu <= sqrt 2
   return -s / (2.0 * mu * mu) + 0.5 * std::log(s + 2.0) - 1.0 / (mu * mu);  // (4.5)
 }
 

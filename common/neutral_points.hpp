@@ -16,24 +16,24 @@
 #include <utility>
 #include <vector>
 
-#include "mu_curves.hpp"
+#include "common/mu_curves.hpp"
 
 namespace granbench {
 
 // Roots of C(I) for a curve given as functions mu(I) and dmu/dI, found by scanning I on a
 // logarithmic grid over [I_lo, I_hi] for sign changes and refining each with GSL Brent.
 std::vector<double> neutral_points(const std::function<double(double)>& mu,
-                                   const std::function<double(double)>& dmu_dI,
-                                   double I_lo = 1e-12, double I_hi = 1e3);
+                                   const std::function<double(double)>& dmu_dI, double I_lo = 1e-12,
+                                   double I_hi = 1e3);
 
 double ill_posedness_C(const MuCurve& curve, double I);
 
 struct WellPosedness {
-  std::vector<double> neutral;                           // all roots of C, ascending
-  std::vector<std::pair<double, double>> intervals;      // [lo, hi] where C <= 0; lo = 0 when
-                                                         // C <= 0 down to the scan floor
-  std::optional<double> I1N, I2N;                        // lower/upper neutral points
-  double I_max_wellposed = 0.0;                          // largest well-posed I
+  std::vector<double> neutral;                       // all roots of C, ascending
+  std::vector<std::pair<double, double>> intervals;  // [lo, hi] where C <= 0; lo = 0 when
+                                                     // C <= 0 down to the scan floor
+  std::optional<double> I1N, I2N;                    // lower/upper neutral points
+  double I_max_wellposed = 0.0;                      // largest well-posed I
 };
 WellPosedness analyse_well_posedness(const MuCurve& curve);
 

@@ -1,5 +1,5 @@
 // flock(2) on "<path>.lock"; see output_lock.hpp.
-#include "output_lock.hpp"
+#include "common/output_lock.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>

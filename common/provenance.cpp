@@ -1,5 +1,5 @@
 // Version, commit, command line and time of a granbench process; see provenance.hpp.
-#include "provenance.hpp"
+#include "common/provenance.hpp"
 
 #include <ctime>
 #include <fstream>

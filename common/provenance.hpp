@@ -1,4 +1,4 @@
-// What every HDF5 file records about how it was made (DESIGN.md: outputs are self-describing):
+// What every HDF5 file records about how it was made (docs/design.md: outputs are self-describing):
 // the granbench version, the git commit of the sources it was built from ("unknown" outside a
 // git checkout), the command line of the process and the time of writing. H5Writer stamps them
 // on the root of every file it closes, so no writer can forget them.

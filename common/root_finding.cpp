@@ -1,5 +1,5 @@
 // GSL Brent iteration behind brent_root; see root_finding.hpp.
-#include "root_finding.hpp"
+#include "common/root_finding.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>

@@ -7,7 +7,6 @@
 namespace granbench {
 
 // Root of f on [lo, hi] (f(lo), f(hi) of opposite sign), to an absolute interval width tol.
-double brent_root(const std::function<double(double)>& f, double lo, double hi,
-                  double tol = 1e-13);
+double brent_root(const std::function<double(double)>& f, double lo, double hi, double tol = 1e-13);
 
 }  // namespace granbench

@@ -1,5 +1,5 @@
 // SurfaceSeries storage; see surface_series.hpp.
-#include "surface_series.hpp"
+#include "common/surface_series.hpp"
 
 #include <stdexcept>
 

@@ -11,12 +11,12 @@
 namespace granbench {
 
 struct SurfaceSeries {
-  double Lx = 0.0;              // domain length [m]
-  double h0 = 0.0;              // mean (base-state) depth [m]
-  std::vector<double> x;        // cell-centre positions [m], size nx
-  std::vector<double> t;        // sample times [s], size nt
-  std::vector<double> h;        // heights [m], row-major [nt][nx]
-  std::vector<double> u_mean;   // depth-averaged velocity [m/s], same shape as h, or empty
+  double Lx = 0.0;             // domain length [m]
+  double h0 = 0.0;             // mean (base-state) depth [m]
+  std::vector<double> x;       // cell-centre positions [m], size nx
+  std::vector<double> t;       // sample times [s], size nt
+  std::vector<double> h;       // heights [m], row-major [nt][nx]
+  std::vector<double> u_mean;  // depth-averaged velocity [m/s], same shape as h, or empty
 
   static SurfaceSeries uniform_grid(double Lx, std::size_t nx, double h0);
   std::size_t nx() const { return x.size(); }

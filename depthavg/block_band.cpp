@@ -1,5 +1,5 @@
 // Block LU without pivoting of a block-banded matrix of 2x2 blocks; see block_band.hpp.
-#include "block_band.hpp"
+#include "depthavg/block_band.hpp"
 
 #include <algorithm>
 #include <cmath>

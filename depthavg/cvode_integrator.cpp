@@ -1,5 +1,5 @@
 // The CVODE glue (BDF + SPGMR + coloured block-band preconditioner). See cvode_integrator.hpp.
-#include "cvode_integrator.hpp"
+#include "depthavg/cvode_integrator.hpp"
 
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "block_band.hpp"
+#include "depthavg/block_band.hpp"
 
 namespace granbench::depthavg {
 

@@ -17,8 +17,8 @@
 #include <span>
 #include <string>
 
-#include "params.hpp"
-#include "rhs.hpp"
+#include "depthavg/params.hpp"
+#include "depthavg/rhs.hpp"
 
 namespace granbench::depthavg {
 

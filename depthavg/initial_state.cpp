@@ -1,5 +1,5 @@
 // Initial states (7.2) and the normal mode (7.10) of (7.7)-(7.8); see initial_state.hpp.
-#include "initial_state.hpp"
+#include "depthavg/initial_state.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -18,7 +18,8 @@ std::vector<double> initial_state(const Rhs& rhs, const InitialParams& init,
 
   std::vector<double> h(nx), u(nx);
   if (init.kind == InitKind::Sine) {
-    for (std::size_t j = 0; j < nx; ++j) h[j] = base.h0 + init.a0 * std::sin(k * rhs.x(j));  // (7.2)
+    for (std::size_t j = 0; j < nx; ++j)
+      h[j] = base.h0 + init.a0 * std::sin(k * rhs.x(j));  // (7.2)
   } else {
     const std::complex<double> I(0.0, 1.0);
     const double k_hat = k * base.h0;
@@ -39,7 +40,8 @@ std::vector<double> initial_state(const Rhs& rhs, const InitialParams& init,
   }
   std::vector<double> U(2 * nx);
   for (std::size_t j = 0; j < nx; ++j) {
-    if (!(h[j] > 0.0)) throw std::invalid_argument("initial state: a0/noise make the depth negative");
+    if (!(h[j] > 0.0))
+      throw std::invalid_argument("initial state: a0/noise make the depth negative");
     // Sine: the steady Bagnold state at the local depth (§7); eigenmode: the mode's velocity
     // (noise leaves u unchanged).
     const double uj = init.kind == InitKind::Sine ? base.mean_velocity_at_depth(h[j]) : u[j];

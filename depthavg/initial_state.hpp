@@ -6,7 +6,8 @@
 //              h = 1 + eps Re(e^{i k x}), u = 1 + eps Re(u_t e^{i k x}) with, from (7.7),
 //              u_t = -(lambda + i k)/(i k),                                        (7.7), (7.10)
 //              eps = a0/h0, k = 2 pi m h0/Lx, lambda the chosen root of the (chi-generalised)
-//              dispersion relation (7.11), which the caller supplies (analysis/dispersion.hpp).
+//              dispersion relation (7.11), which the caller supplies
+//              (analysis/theory/dispersion.hpp).
 //
 // Optional noise: uniform random heights of amplitude noise*h0 (zero mean, so the mass is that of
 // the noiseless state), fixed seed. Values at the cell centres (second-order cell averages).
@@ -15,8 +16,8 @@
 #include <complex>
 #include <vector>
 
-#include "params.hpp"
-#include "rhs.hpp"
+#include "depthavg/params.hpp"
+#include "depthavg/rhs.hpp"
 
 namespace granbench::depthavg {
 

@@ -1,5 +1,5 @@
 // Names of the depth-averaged model's choices as used on the command line and in output files.
-#include "params.hpp"
+#include "depthavg/params.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -8,10 +8,14 @@ namespace granbench::depthavg {
 
 std::string_view reconstruction_name(Reconstruction r) {
   switch (r) {
-    case Reconstruction::Central: return "central";
-    case Reconstruction::Minmod: return "minmod";
-    case Reconstruction::MC: return "mc";
-    case Reconstruction::VanAlbada: return "vanalbada";
+    case Reconstruction::Central:
+      return "central";
+    case Reconstruction::Minmod:
+      return "minmod";
+    case Reconstruction::MC:
+      return "mc";
+    case Reconstruction::VanAlbada:
+      return "vanalbada";
   }
   return "?";
 }

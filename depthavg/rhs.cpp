@@ -1,6 +1,6 @@
 // The right-hand side of the depth-averaged mu(I) equations (7.3)-(7.4): reconstruction, the
 // central-upwind flux, the viscous face flux and the friction source. See rhs.hpp for the scheme.
-#include "rhs.hpp"
+#include "depthavg/rhs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -59,7 +59,7 @@ double Rhs::velocity(double h, double q) const {
 double Rhs::momentum_source(double h, double q) const {
   if (h <= 0.0) return 0.0;
   const double u = velocity(h, q);
-  const double I = inertial_scale_ * std::fabs(u) / (h * std::sqrt(h));  // DESIGN.md §4, (7.1)
+  const double I = inertial_scale_ * std::fabs(u) / (h * std::sqrt(h));  // docs/design.md §4, (7.1)
   // At rest: static friction balances gravity up to the curve's value at I -> 0+.
   const double mu = (u != 0.0 && I > 0.0) ? std::copysign(curve_.mu(I), u) : mu_rest_;
   return g_cos_ * h * (tan_zeta_ - mu);  // (7.4): h g cos(zeta) (tan(zeta) - mu)
@@ -161,7 +161,8 @@ void Rhs::operator()(std::span<const double> U, std::span<double> dUdt) const {
       break;
   }
 
-  // 3. Friction mu(I) once per cell, at I = inertial_scale |u| / h^{3/2} (DESIGN.md §4, (7.1)).
+  // 3. Friction mu(I) once per cell, at I = inertial_scale |u| / h^{3/2} (docs/design.md §4,
+  // (7.1)).
   double* I = inertial_.data();
   for (std::size_t j = 0; j < n; ++j) {
     const double hj = std::max(h[j + g], 1e-100);

@@ -6,7 +6,7 @@
 //         = g h cos(zeta) (tan(zeta) - mu(I)) + d/dx(nu h^{3/2} du/dx)                (7.4)
 //
 // with mu the shared curve at the depth-averaged inertial number I = 5 d u / (2 h^{3/2}
-// sqrt(phi g cos zeta)) (DESIGN.md §4), nu of (7.5) (generalised, from SteadyState) and the
+// sqrt(phi g cos zeta)) (docs/design.md §4), nu of (7.5) (generalised, from SteadyState) and the
 // momentum shape factor chi (chi = 1 is (7.4) as printed).
 //
 // Semi-discretisation: cell averages; face values by piecewise-linear reconstruction of (h, q)
@@ -35,9 +35,9 @@
 #include <span>
 #include <vector>
 
-#include "mu_curves.hpp"
-#include "params.hpp"
-#include "steady_state.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
+#include "depthavg/params.hpp"
 
 namespace granbench::depthavg {
 

@@ -1,5 +1,5 @@
 // Run loop of the depth-averaged solver: sampling, progress, interruption, divergence detection.
-#include "solver.hpp"
+#include "depthavg/solver.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "real_fft.hpp"
+#include "common/real_fft.hpp"
 
 namespace granbench::depthavg {
 
@@ -20,7 +20,9 @@ double mass_of(const std::vector<double>& U, double dx) {
   return m * dx;
 }
 
-const char* quantity_name(std::size_t component) { return component % 2 == 0 ? "h" : "h*u"; }
+const char* quantity_name(std::size_t component) {
+  return component % 2 == 0 ? "h" : "h*u";
+}
 
 // First sign of divergence in U: a non-finite value, a non-positive depth, or a depth beyond
 // 100 h0. Empty when the state looks sane.
@@ -94,17 +96,16 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
   sample(0.0, U0);
   res.mass_initial = mass_of(U0, rhs_.dx());
 
-  const auto n_samples =
-      static_cast<std::size_t>(std::ceil(out.t_end / out.dt_out - 1e-9));
+  const auto n_samples = static_cast<std::size_t>(std::ceil(out.t_end / out.dt_out - 1e-9));
   try {
     for (std::size_t n = 1; n <= n_samples; ++n) {
       const double t_out = std::min(static_cast<double>(n) * out.dt_out, out.t_end);
       const AdvanceResult adv = integ.advance_to(t_out);
       if (!adv.ok) {
         std::ostringstream s;
-        s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message
-          << "); " << (adv.nonfinite ? "non-finite " : "largest local error in ")
-          << quantity_name(adv.worst) << " at x = " << rhs_.x(adv.worst / 2) << " m";
+        s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message << "); "
+          << (adv.nonfinite ? "non-finite " : "largest local error in ") << quantity_name(adv.worst)
+          << " at x = " << rhs_.x(adv.worst / 2) << " m";
         res.status = RunStatus::Diverged;
         res.message = s.str();
         break;
@@ -126,8 +127,9 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
   } catch (const std::exception& e) {
     // Whatever fails inside the loop, the samples so far are the caller's to keep.
     res.status = RunStatus::Failed;
-    res.message = "failed at t = " + std::to_string(integ.time()) + " s (after the sample at t = " +
-                  std::to_string(res.series.t.back()) + " s): " + e.what();
+    res.message = "failed at t = " + std::to_string(integ.time()) +
+                  " s (after the sample at t = " + std::to_string(res.series.t.back()) +
+                  " s): " + e.what();
   }
 
   const auto U = integ.state();

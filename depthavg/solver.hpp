@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "run_status.hpp"
-#include "cvode_integrator.hpp"
-#include "params.hpp"
-#include "rhs.hpp"
-#include "surface_series.hpp"
+#include "common/run_status.hpp"
+#include "common/surface_series.hpp"
+#include "depthavg/cvode_integrator.hpp"
+#include "depthavg/params.hpp"
+#include "depthavg/rhs.hpp"
 
 namespace granbench::depthavg {
 
@@ -26,12 +26,12 @@ struct RunResult {
   SurfaceSeries series;
   CvodeStats stats;
   RunStatus status = RunStatus::Completed;
-  std::string message;          // what went wrong (time, place, quantity), empty if completed
+  std::string message;  // what went wrong (time, place, quantity), empty if completed
   double wall_seconds = 0.0;
   double t_reached = 0.0;
-  double mass_initial = 0.0;    // integral of h over the domain [m^2]
+  double mass_initial = 0.0;  // integral of h over the domain [m^2]
   double mass_final = 0.0;
-  double flux_final = 0.0;      // domain mean of q = h u at the last sample [m^2/s]
+  double flux_final = 0.0;          // domain mean of q = h u at the last sample [m^2/s]
   std::vector<double> final_state;  // U at t_reached, in the computational (possibly co-moving)
                                     // frame; the series is always in the lab frame
   double mass_error() const { return std::fabs(mass_final - mass_initial) / mass_initial; }
@@ -39,7 +39,7 @@ struct RunResult {
 
 struct RunCallbacks {
   std::function<void(double t, double t_end)> progress;  // after each sample, may be empty
-  const std::atomic<bool>* stop = nullptr;                // checked after each sample
+  const std::atomic<bool>* stop = nullptr;               // checked after each sample
 };
 
 class Solver {

@@ -4,14 +4,14 @@
 // guesses and the second-order step's memory (A^n, the last step: Solver::warm_start);
 // /run/snapshot_times the times of the snapshots written so far; /physics/<name> one scalar per
 // physical input (checkpoint_physics). A restart continues bit-for-bit from here.
-#include "checkpoint.hpp"
+#include "twod/checkpoint.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
-#include "diagnostics.hpp"
-#include "hdf5_file.hpp"
+#include "common/hdf5_file.hpp"
+#include "twod/diagnostics.hpp"
 
 namespace granbench::twod {
 
@@ -71,11 +71,10 @@ std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverPar
   }
   // After the physics: a depth that differs also changes the default Lz, and --h0 is the
   // better name for that.
-  const std::pair<std::string, std::pair<double, double>> grid[] = {
-      {"nx", {c.grid.nx, g.nx}},
-      {"nz", {c.grid.nz, g.nz}},
-      {"Lx", {c.grid.Lx, g.Lx}},
-      {"Lz", {c.grid.Lz, g.Lz}}};
+  const std::pair<std::string, std::pair<double, double>> grid[] = {{"nx", {c.grid.nx, g.nx}},
+                                                                    {"nz", {c.grid.nz, g.nz}},
+                                                                    {"Lx", {c.grid.Lx, g.Lx}},
+                                                                    {"Lz", {c.grid.Lz, g.Lz}}};
   for (const auto& [name, v] : grid)
     if (differs(v.first, v.second)) return text(name, v.first, v.second);
   return {};

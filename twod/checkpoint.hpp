@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "solver.hpp"
-#include "surface_series.hpp"
+#include "common/surface_series.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/solver.hpp"
 
 namespace granbench::twod {
 
@@ -22,7 +22,7 @@ struct Checkpoint {
   double dt_last = 0.0;
   double initial_volume = 0.0;
   SurfaceSeries series;
-  WarmStart warm_start;  // empty in checkpoints written before it was saved
+  WarmStart warm_start;                // empty in checkpoints written before it was saved
   std::vector<double> snapshot_times;  // the snapshots the run had written [s]
   // The physics as (name, value): the names are the options of `granbench run` that set them
   // (angle, curve, mu-s, ..., h0, eta-max, ...); curve and mixing as their enumerators' indices.

@@ -1,13 +1,13 @@
 // Diagnostics of the 2D flow: column integrals of the volume fraction (the SurfaceSeries both
 // models share), flux, and the well-posedness condition (3.9) over the granular cells,
 //   C = 4 (I mu'/mu)^2 - 4 (I mu'/mu) + mu^2 (1 - I mu'/(2 mu))^2,  ill posed where C > 0.
-#include "diagnostics.hpp"
+#include "twod/diagnostics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "ill_posedness.hpp"
+#include "common/ill_posedness.hpp"
 
 namespace granbench::twod {
 

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "mu_curves.hpp"
+#include "common/mu_curves.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
 
 namespace granbench::twod {
 

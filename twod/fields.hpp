@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "grid.hpp"
+#include "twod/grid.hpp"
 
 namespace granbench::twod {
 

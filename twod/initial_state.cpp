@@ -10,20 +10,22 @@
 // initial field is divergence free on the grid and kinematically consistent with (7.2). The
 // pressure is the discrete hydrostatic balance of the cell densities (equal to (5.4) inside
 // the grains), so a layer at rest starts in exact equilibrium.
-#include "initial_state.hpp"
+#include "twod/initial_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "properties.hpp"
+#include "twod/properties.hpp"
 
 namespace granbench::twod {
 
 InitialCondition perturbed_bagnold(const SteadyState& steady, double a0, double Lx) {
   InitialCondition ic;
   const double h0 = steady.h0;
-  ic.height = [=](double x) { return h0 + a0 * std::sin(2.0 * std::numbers::pi * x / Lx); };  // (7.2)
+  ic.height = [=](double x) {
+    return h0 + a0 * std::sin(2.0 * std::numbers::pi * x / Lx);
+  };  // (7.2)
   ic.velocity = [steady, height = ic.height](double x, double z) {
     const double h = height(x);
     return steady.velocity_at_depth(std::min(z, h), h);  // (5.5) at the local depth
@@ -62,8 +64,7 @@ Fields make_initial_state(const Grid& g, const InitialCondition& ic, const Solve
     for (int i = 0; i < g.nx; ++i) s.u[g.at(i, k)] = ic.velocity(i * g.dx, g.zc(k));
   for (int i = 0; i < g.nx; ++i)
     for (int k = 0; k < g.nz; ++k)  // discrete continuity from the bed (w = 0 there)
-      s.w[g.at(i, k + 1)] =
-          s.w[g.at(i, k)] - g.dz * (s.u[g.at(i + 1, k)] - s.u[g.at(i, k)]) / g.dx;
+      s.w[g.at(i, k + 1)] = s.w[g.at(i, k)] - g.dz * (s.u[g.at(i + 1, k)] - s.u[g.at(i, k)]) / g.dx;
   Properties props(g);
   update_densities(g, s.f, params.rheology, props);
   hydrostatic_pressure(g, props, params.rheology.material.g * std::cos(params.zeta), s.p);

@@ -7,10 +7,10 @@
 
 #include <functional>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "parameters.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::twod {
 

@@ -7,7 +7,7 @@
 //   T_l z_l = r_l - sum_{j not in line l} A_lj z_j,     lines ascending, then descending.
 //
 // The forward-backward pair makes M symmetric, as CG requires.
-#include "line_relaxation.hpp"
+#include "twod/line_relaxation.hpp"
 
 #include <stdexcept>
 

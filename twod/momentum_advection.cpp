@@ -7,14 +7,16 @@
 // smooth, no new extrema; stable for the Courant numbers < 1/2 the VOF already imposes). The
 // - q div(u) term removes the discrete divergence of the averaged advecting field.
 // Boundaries: no flux through the bed; at the top q is extended with zero gradient.
-#include "momentum_advection.hpp"
+#include "twod/momentum_advection.hpp"
 
 #include <algorithm>
 
 namespace granbench::twod {
 
 namespace {
-double van_leer(double a, double b) { return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0; }
+double van_leer(double a, double b) {
+  return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
+}
 
 // Upwind-reconstructed face value between q1 (behind) and q2 (ahead) for velocity V, with q0
 // before q1 and q3 after q2.
@@ -46,12 +48,12 @@ void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv
       const double Wb = k == 0 ? 0.0 : 0.5 * (W(i - 1, k) + W(i, k));
       const double Wt = 0.5 * (W(i - 1, k + 1) + W(i, k + 1));
       const double qb = k == 0 ? 0.0 : upwind(Wb, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1));
-      const double qt = k == nz - 1 ? U(i, k)
-                                    : upwind(Wt, U(i, k - 1), U(i, k), U(i, k + 1), U(i, k + 2));
+      const double qt =
+          k == nz - 1 ? U(i, k) : upwind(Wt, U(i, k - 1), U(i, k), U(i, k + 1), U(i, k + 2));
       const double div = (Vr - Vl) / g.dx + (Wt - Wb) / g.dz;
       adv_u[g.at(i, k)] = (Vr * qr - Vl * ql) / g.dx + (Wt * qt - Wb * qb) / g.dz - U(i, k) * div;
     }
-  // z-momentum on the control volume of interior w-face (i, k).
+    // z-momentum on the control volume of interior w-face (i, k).
 #pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "fields.hpp"
-#include "grid.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
 
 namespace granbench::twod {
 

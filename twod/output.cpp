@@ -3,7 +3,7 @@
 // the XDMF "2DRectMesh" (VXVY geometry) with cell-centred attributes describes them exactly.
 // The XDMF file is a temporal collection of one grid per snapshot, each pointing into the HDF5
 // file as "file.h5:/snapshots/NNNN/<field>".
-#include "output.hpp"
+#include "twod/output.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "diagnostics.hpp"
+#include "twod/diagnostics.hpp"
 
 namespace granbench::twod {
 

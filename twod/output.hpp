@@ -1,16 +1,17 @@
 // Output of the 2D solver (output.cpp): cell-centred HDF5 snapshots of u, w, p, f, I, eta and
 // C(I) and the vector velocity (u, w, 0), with an XDMF index that ParaView opens as a time series
 // with any of its three XDMF readers (a 2DSMesh with XY node geometry: x along the slope, VTK's
-// y the bed-normal z), and the run parameters (the regularisation constants included, DESIGN.md
-// §8) as attributes. I and C are NaN where p <= 0 (no inertial number without pressure).
+// y the bed-normal z), and the run parameters (the regularisation constants included,
+// docs/design.md §8) as attributes. I and C are NaN where p <= 0 (no inertial number without
+// pressure).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "grid.hpp"
-#include "hdf5_file.hpp"
-#include "solver.hpp"
+#include "common/hdf5_file.hpp"
+#include "twod/grid.hpp"
+#include "twod/solver.hpp"
 
 namespace granbench::twod {
 

@@ -1,5 +1,5 @@
 // Thread count and fixed-partition sums of the 2D solver; see parallel.hpp.
-#include "parallel.hpp"
+#include "twod/parallel.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -1,13 +1,13 @@
 // Parameters of the 2D two-phase mu(I) solver (value types with defaults, passed by const ref).
 //
-// The regularisation constants of the granular viscosity (DESIGN.md §8) are case inputs and are
-// written into every output: the floor on |D|, the cap eta_max (2 Pa s as in Gerris' runs), the
+// The regularisation constants of the granular viscosity (docs/design.md §8) are case inputs and
+// are written into every output: the floor on |D|, the cap eta_max (2 Pa s as in Gerris' runs), the
 // floor eta_min, and the rule that mixes granular and light-fluid viscosities in interface cells.
 #pragma once
 
-#include "material.hpp"
-#include "mu_curves.hpp"
-#include "parallel.hpp"
+#include "common/material.hpp"
+#include "common/mu_curves.hpp"
+#include "twod/parallel.hpp"
 
 namespace granbench::twod {
 
@@ -55,7 +55,7 @@ struct Rheology {
   double eta_max = 2.0;        // cap on the granular viscosity [Pa s]
   double eta_min = 1e-3;       // floor on the granular viscosity [Pa s]
   double D_min = 1e-6;         // floor on |D| [1/s]
-  // The light fluid stands in for the stress-free surface of the theory (DESIGN.md §7): the
+  // The light fluid stands in for the stress-free surface of the theory (docs/design.md §7): the
   // lighter and less viscous it is, the closer the surface is to stress free. At 1.5 kg m^-3
   // and 1e-3 Pa s (air-like) its drag on the surface cost ~20 % of the §7 growth rate, because
   // 1e-3 Pa s is the granular tangent viscosity one cell below the surface at 32 cells per h0

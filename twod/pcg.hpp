@@ -11,7 +11,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "parallel.hpp"
+#include "twod/parallel.hpp"
 
 namespace granbench::twod {
 

@@ -7,7 +7,7 @@
 //        = (alpha - a/2)/b             a <= alpha <= b
 //        = 1 - (1 - alpha)^2/(2ab)     alpha >  b
 // and the inverse follows branch by branch with c1 = a/(2b).
-#include "plic.hpp"
+#include "twod/plic.hpp"
 
 #include <algorithm>
 #include <cmath>

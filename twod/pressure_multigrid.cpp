@@ -17,7 +17,7 @@
 // solved in parallel; the operator, factors and grid transfers are parallel over columns. Every
 // value is computed by the same arithmetic for any thread count. Levels below kParallelCells
 // cells stay on one thread (too little work to share).
-#include "pressure_multigrid.hpp"
+#include "twod/pressure_multigrid.hpp"
 
 namespace granbench::twod {
 
@@ -39,7 +39,7 @@ void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
     double* yi = &y[cell(i, 0)];
     for (int k = 0; k < nz; ++k)
       yi[k] = cl[k] * (xi[k] - xl[k]) + cr[k] * (xi[k] - xr[k]) + (czi[k] + czi[k + 1]) * xi[k];
-    for (int k = 1; k < nz; ++k) yi[k] -= czi[k] * xi[k - 1];   // bed face has czi[0] = 0
+    for (int k = 1; k < nz; ++k) yi[k] -= czi[k] * xi[k - 1];  // bed face has czi[0] = 0
     for (int k = 0; k < nz - 1; ++k) yi[k] -= czi[k + 1] * xi[k + 1];
   }
 }
@@ -53,7 +53,8 @@ void PoissonLevel::factorise() {
     for (int k = 0; k < nz; ++k) {
       const int c = cell(i, k);
       const double diag = cx[c] + cx[cell(ir, k)] + cz[zface(i, k)] + cz[zface(i, k + 1)];
-      const double lower = k > 0 ? -cz[zface(i, k)] : 0.0, upper = k < nz - 1 ? -cz[zface(i, k + 1)] : 0.0;
+      const double lower = k > 0 ? -cz[zface(i, k)] : 0.0,
+                   upper = k < nz - 1 ? -cz[zface(i, k + 1)] : 0.0;
       inv_m[c] = 1.0 / (diag - (k > 0 ? lower * cp[c - 1] : 0.0));
       cp[c] = upper * inv_m[c];
     }
@@ -157,12 +158,11 @@ void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd&
   auto sweep_colour = [&](int first, bool ascending) {
     const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
     const bool last_alone = nx % 2 == 1 && first == 0 && count > 1;  // column nx - 1
-    const int free = last_alone ? count - 1 : count;  // columns first + 2m, m < free
+    const int free = last_alone ? count - 1 : count;                 // columns first + 2m, m < free
     const int pairs = free / 2;
     if (last_alone && !ascending) solve_columns<1>(L, b, x, {nx - 1});
 #pragma omp parallel for schedule(static) if (parallel)
-    for (int m = 0; m < pairs; ++m)
-      solve_columns<2>(L, b, x, {first + 4 * m, first + 4 * m + 2});
+    for (int m = 0; m < pairs; ++m) solve_columns<2>(L, b, x, {first + 4 * m, first + 4 * m + 2});
     if (free % 2 == 1) solve_columns<1>(L, b, x, {first + 2 * (free - 1)});
     if (last_alone && ascending) solve_columns<1>(L, b, x, {nx - 1});
   };
@@ -198,7 +198,7 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   rc.setZero(C.nx * C.nz);
   const Eigen::VectorXd& Ax = res_[l];
 #pragma omp parallel for schedule(static) if (parallel)
-  for (int ic = 0; ic < C.nx; ++ic)  // R = P^T: sum of the 2 x 2 fine residuals b - A x
+  for (int ic = 0; ic < C.nx; ++ic)              // R = P^T: sum of the 2 x 2 fine residuals b - A x
     for (int i = 2 * ic; i < 2 * ic + 2; ++i) {  // fine columns in order, as serially
       const double* bi = &b[L.cell(i, 0)];
       const double* ai = &Ax[L.cell(i, 0)];

@@ -11,11 +11,11 @@
 // p = 0, so dp = 0 at z = Lz, half a cell above the last centre.
 // Solved by conjugate gradients preconditioned with geometric multigrid (pressure_multigrid.cpp,
 // matrix-free) or, on request, with an assembled matrix and one of the sparse preconditioners.
-#include "projection.hpp"
+#include "twod/projection.hpp"
 
 #include <stdexcept>
 
-#include "pcg.hpp"
+#include "twod/pcg.hpp"
 
 namespace granbench::twod {
 
@@ -25,7 +25,9 @@ double cell_divergence(const Grid& g, const std::vector<double>& u, const std::v
 }
 
 Projection::Projection(const Grid& g, const SolverParams& params)
-    : g_(g), kind_(params.pressure_solver), tol_(params.solver_tolerance),
+    : g_(g),
+      kind_(params.pressure_solver),
+      tol_(params.solver_tolerance),
       solver_(params.pressure_solver, params.solver_tolerance) {
   op_.nx = g.nx;
   op_.nz = g.nz;
@@ -50,7 +52,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   auto id = [&](int i, int k) { return g.wrap(i) * nz + k; };
   b_.resize(n);
   if (x_.size() != n) x_.setZero(n);  // warm start: the previous step's increment
-  // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
+    // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
@@ -59,16 +61,15 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nx; ++i) {
       for (int k = 0; k < nz; ++k) op_.cx[op_.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
-      op_.cz[op_.zface(i, 0)] = 0.0;                                       // bed: no flux
+      op_.cz[op_.zface(i, 0)] = 0.0;  // bed: no flux
       for (int k = 1; k < nz; ++k) op_.cz[op_.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
-      op_.cz[op_.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];      // dp = 0 at top
+      op_.cz[op_.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
     }
     multigrid_.set_operator(op_);
-    iterations = pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
-                     [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-                       multigrid_.precondition(r, z);
-                     },
-                     b_, x_, tol_, 500);
+    iterations =
+        pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
+            [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_.precondition(r, z); },
+            b_, x_, tol_, 500);
     if (iterations < 0) throw std::runtime_error("pressure multigrid-CG did not converge");
     ++mg_stats_.solves;
     mg_stats_.iterations += iterations;

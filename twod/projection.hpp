@@ -4,11 +4,11 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "parameters.hpp"
-#include "pressure_multigrid.hpp"
-#include "spd_solver.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
+#include "twod/pressure_multigrid.hpp"
+#include "twod/spd_solver.hpp"
 
 namespace granbench::twod {
 

@@ -6,7 +6,7 @@
 //   I = 2 d |D| / sqrt(p / rho_*)                                         (2.8)
 //   eta_g = mu(I) p / (2 |D|)                                             (2.11)
 //   |D| = sqrt(D:D / 2) = sqrt((D_xx^2 + D_zz^2)/2 + D_xz^2)
-// regularised as DESIGN.md §8: p is clipped at 0 (eta_g = eta_min where p <= 0), |D| is
+// regularised as docs/design.md §8: p is clipped at 0 (eta_g = eta_min where p <= 0), |D| is
 // floored at D_min and eta_g is kept in [eta_min, eta_max].
 //
 // Locations on the MAC grid: D_xx, D_zz are exact at cell centres and D_xz = gamma/2 with
@@ -33,7 +33,7 @@
 // and as light fluid above it.
 // Threads: the grid loops are parallel over rows; each value is written once, by the same
 // arithmetic for any thread count (parallel.hpp).
-#include "properties.hpp"
+#include "twod/properties.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -185,7 +185,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
       props.I_c[c] = model.inertial_number(p[c], D);
     }
-  // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
+    // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
 #pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);

@@ -2,10 +2,10 @@
 // (properties.cpp): face densities and the mu(I) viscosity with its regularisation.
 #pragma once
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "mu_curves.hpp"
-#include "parameters.hpp"
+#include "common/mu_curves.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::twod {
 

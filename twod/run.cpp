@@ -1,5 +1,5 @@
 // A run of the 2D solver: the sampling schedule, the hooks and the stopping rules of run.hpp.
-#include "run.hpp"
+#include "twod/run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -24,7 +24,9 @@ bool reached(double t, double target) {
 
 }  // namespace
 
-double divergence_speed_limit(double u_surface) { return std::max(50.0, 10.0 * u_surface); }
+double divergence_speed_limit(double u_surface) {
+  return std::max(50.0, 10.0 * u_surface);
+}
 
 RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
               const RunHooks& hooks) {
@@ -111,8 +113,8 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
     // a failed linear solve, a full disk: keep what was computed, say when and where
     r.status = RunStatus::Failed;
     r.message = "failed at t = " + std::to_string(solver.state().t) + " s (step " +
-                std::to_string(solver.statistics().steps + 1) + ", after the sample at t = " +
-                std::to_string(t_good) + " s): " + e.what();
+                std::to_string(solver.statistics().steps + 1) +
+                ", after the sample at t = " + std::to_string(t_good) + " s): " + e.what();
   }
   if (r.status == RunStatus::Interrupted && hooks.checkpoint) {
     try {

@@ -4,8 +4,8 @@
 // Schedule. Samples are taken at t = min(k dt_out, t_end), k = 1, 2, ..., on the uniform grid
 // counted from t = 0, whatever time the solver starts at: a run restarted from a checkpoint at
 // time t_c continues with the first k dt_out after t_c, so its series is the uninterrupted run's
-// (the measurement needs that uniform grid, analysis/surface_measurement.hpp). Snapshots, when
-// asked for, are taken at the start and at j dt_snapshot on the same kind of grid. The start
+// (the measurement needs that uniform grid, analysis/spectral/surface_measurement.hpp). Snapshots,
+// when asked for, are taken at the start and at j dt_snapshot on the same kind of grid. The start
 // counts only for a new run (an empty series): a restart adds neither sample nor snapshot there.
 // The solver is advanced with Solver::advance_to to each next event time, so the step sequence
 // depends only on the event times: a run with the same events repeats another to the bit (the
@@ -34,17 +34,17 @@
 #include <optional>
 #include <string>
 
-#include "run_status.hpp"
-#include "diagnostics.hpp"
-#include "solver.hpp"
-#include "surface_series.hpp"
+#include "common/run_status.hpp"
+#include "common/surface_series.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/solver.hpp"
 
 namespace granbench::twod {
 
 struct RunSchedule {
-  double t_end = 1.0;        // [s]
-  double dt_out = 0.01;      // samples at k dt_out [s]
-  double dt_snapshot = 0.0;  // snapshots at j dt_snapshot [s]; 0: only the one at the start
+  double t_end = 1.0;          // [s]
+  double dt_out = 0.01;        // samples at k dt_out [s]
+  double dt_snapshot = 0.0;    // snapshots at j dt_snapshot [s]; 0: only the one at the start
   double dt_checkpoint = 0.0;  // checkpoint hook every dt_checkpoint [s] of simulated time; 0: none
 };
 
@@ -68,7 +68,7 @@ struct RunResult {
   std::string message;                        // why it stopped early; empty if completed
   std::optional<DivergenceError> divergence;  // when, where: set if Diverged
   SurfaceSeries series;
-  // Rheology over the samples taken after the start (DESIGN.md §9): the range of I visited,
+  // Rheology over the samples taken after the start (docs/design.md §9): the range of I visited,
   // the ill-posed fraction at the last such sample and its largest value.
   double I_min = 0.0, I_max = 0.0;  // NaN if no sample had a granular cell with p > 0
   RheologyStats last;

@@ -1,11 +1,11 @@
 // RunOutput (run_output.hpp): the output is rewritten whole at each checkpoint; the snapshots
 // come across by HDF5 object copy from the file written at the previous checkpoint, so the
 // solver state is needed only once per snapshot.
-#include "run_output.hpp"
+#include "twod/run_output.hpp"
 
 #include <filesystem>
 
-#include "checkpoint.hpp"
+#include "twod/checkpoint.hpp"
 
 namespace granbench::twod {
 

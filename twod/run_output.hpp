@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_file.hpp"
-#include "output.hpp"
-#include "run.hpp"
+#include "common/hdf5_file.hpp"
+#include "twod/output.hpp"
+#include "twod/run.hpp"
 
 namespace granbench::twod {
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "output.hpp"
+#include "twod/output.hpp"
 
 namespace granbench::twod {
 
@@ -17,8 +17,8 @@ void SnapshotWriter::carry_over(const std::string& earlier, const std::vector<do
     std::snprintf(name, sizeof name, "/snapshots/%04zu", times_.size());
     const double stored = h5_read_attribute(earlier, name, "t");
     if (std::abs(stored - t) > 1e-12 * std::max(1.0, std::abs(t)))
-      throw std::runtime_error(earlier + ": snapshot " + name + " is at t = " +
-                               std::to_string(stored) + " s, the checkpoint's at " +
+      throw std::runtime_error(earlier + ": snapshot " + name +
+                               " is at t = " + std::to_string(stored) + " s, the checkpoint's at " +
                                std::to_string(t) + " s (not the same run)");
     out_.copy_from(earlier, name);
     times_.push_back(t);

@@ -32,17 +32,17 @@
 //
 // After each step the state is checked: a NaN or a speed above velocity_limit stops the run
 // with a DivergenceError naming the time, the place and the quantity.
-#include "solver.hpp"
+#include "twod/solver.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "diagnostics.hpp"
-#include "momentum_advection.hpp"
-#include "parallel.hpp"
-#include "surface_row_pressure.hpp"
-#include "time_step.hpp"
-#include "viscosity_pressure.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/momentum_advection.hpp"
+#include "twod/parallel.hpp"
+#include "twod/surface_row_pressure.hpp"
+#include "twod/time_step.hpp"
+#include "twod/viscosity_pressure.hpp"
 
 namespace granbench::twod {
 

@@ -9,13 +9,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "parameters.hpp"
-#include "projection.hpp"
-#include "properties.hpp"
-#include "viscous_step.hpp"
-#include "vof_advection.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
+#include "twod/projection.hpp"
+#include "twod/properties.hpp"
+#include "twod/viscous_step.hpp"
+#include "twod/vof_advection.hpp"
 
 namespace granbench::twod {
 

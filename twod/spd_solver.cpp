@@ -1,18 +1,19 @@
 // Fixed-pattern assembly and the preconditioned conjugate-gradient solves (see spd_solver.hpp).
-#include "spd_solver.hpp"
-
-#include "pcg.hpp"
+#include "twod/spd_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "twod/pcg.hpp"
 
 namespace granbench::twod {
 
 void PatternedMatrix::begin(int n) {
   count_ = 0;
   if (fixed_) {
-    if (A_.rows() != n) throw std::logic_error("PatternedMatrix: size changed after first assembly");
+    if (A_.rows() != n)
+      throw std::logic_error("PatternedMatrix: size changed after first assembly");
     values_ = A_.valuePtr();
     std::fill(values_, values_ + A_.nonZeros(), 0.0);
   } else {
@@ -25,7 +26,8 @@ void PatternedMatrix::begin(int n) {
 
 void PatternedMatrix::end() {
   if (fixed_) {
-    if (count_ != slot_.size()) throw std::logic_error("PatternedMatrix: assembly sequence changed");
+    if (count_ != slot_.size())
+      throw std::logic_error("PatternedMatrix: assembly sequence changed");
     return;
   }
   std::vector<Eigen::Triplet<double>> triplets;
@@ -69,16 +71,18 @@ int SpdSolver::run(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
   auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { y.noalias() = A * v; };
   switch (kind_) {
     case LinearSolverKind::Jacobi:
-      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-        z = inv_diag_.cwiseProduct(r);
-      }, b, x, tol_, max_iterations);
+      return pcg(
+          apply,
+          [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = inv_diag_.cwiseProduct(r); }, b,
+          x, tol_, max_iterations);
     case LinearSolverKind::LineRelaxation:
-      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-        line_.precondition(A, r, z);
-      }, b, x, tol_, max_iterations);
+      return pcg(
+          apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { line_.precondition(A, r, z); },
+          b, x, tol_, max_iterations);
     default:
-      return pcg(apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = llt_.solve(r); },
-                 b, x, tol_, max_iterations);
+      return pcg(
+          apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = llt_.solve(r); }, b, x,
+          tol_, max_iterations);
   }
 }
 

@@ -22,8 +22,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "line_relaxation.hpp"
-#include "parameters.hpp"
+#include "twod/line_relaxation.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::twod {
 

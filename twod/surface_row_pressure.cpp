@@ -29,7 +29,7 @@
 // force, and the projection is unchanged (its increment keeps the standard gradient). An earlier
 // form took the correction from the actual pressure of the rows above and below; it jumped when
 // the surface crossed a face and made the Picard passes stop converging.
-#include "surface_row_pressure.hpp"
+#include "twod/surface_row_pressure.hpp"
 
 #include <cmath>
 

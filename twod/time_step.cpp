@@ -5,7 +5,7 @@
 // Advection (momentum and the split VOF, which needs |u| dt/dx < 1/2 per direction) is the
 // only explicit part; viscosity is implicit and imposes no limit. The growth cap keeps dt from
 // jumping when the flow starts from rest.
-#include "time_step.hpp"
+#include "twod/time_step.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // Adaptive time step (time_step.cpp).
 #pragma once
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "parameters.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::twod {
 

@@ -16,7 +16,7 @@
 // (Extrapolating the whole pressure, p^n + r (p^n - p^{n-1}), was tried first: it feeds the
 // projection's pressure increment back into itself through eta and grew without bound within
 // ~60 steps of the §7 case.)
-#include "viscosity_pressure.hpp"
+#include "twod/viscosity_pressure.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "grid.hpp"
-#include "parameters.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::twod {
 

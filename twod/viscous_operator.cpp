@@ -26,7 +26,7 @@
 // moved the growth rate of `granbench compare --Lx 0.08` from 1.04877 to 1.04869 1/s (the
 // viscous solve converges to 1e-8, and the growth fit sees that), and the sweep is ~6 % of the
 // run.
-#include "viscous_operator.hpp"
+#include "twod/viscous_operator.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -9,9 +9,9 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "fields.hpp"
-#include "grid.hpp"
-#include "spd_solver.hpp"
+#include "twod/fields.hpp"
+#include "twod/grid.hpp"
+#include "twod/spd_solver.hpp"
 
 namespace granbench::twod {
 

@@ -24,12 +24,12 @@
 // du/dz = 0, with the top w (and its dw/dx in tau_xz) lagged at w^n.
 // The pressure gradient and gravity sit on the same faces with the same rho as in the projection
 // (balanced force), so a hydrostatic p^n cancels gravity exactly.
-#include "viscous_step.hpp"
+#include "twod/viscous_step.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "pcg.hpp"
+#include "twod/pcg.hpp"
 
 namespace granbench::twod {
 

@@ -17,12 +17,12 @@
 // periodic in x and mirrored (zero gradient) at the bed and the top.
 // Threads: the fluxes of a sweep read f only and the update writes each cell once, so both
 // loops are parallel over rows (parallel.hpp).
-#include "vof_advection.hpp"
+#include "twod/vof_advection.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "plic.hpp"
+#include "twod/plic.hpp"
 
 namespace granbench::twod {
 
@@ -51,8 +51,8 @@ double donor_flux(const Grid& g, const std::vector<double>& f, int i, int k, int
 }
 
 void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double>& w, double dt,
-           int dir, const std::vector<char>& c, std::vector<double>& f,
-           std::vector<double>& flux, VofStats& stats) {
+           int dir, const std::vector<char>& c, std::vector<double>& f, std::vector<double>& flux,
+           VofStats& stats) {
   const int nx = g.nx, nz = g.nz;
   if (dir == 0) {
     const double r = dt / g.dx;
@@ -125,4 +125,3 @@ void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
 }
 
 }  // namespace granbench::twod
-

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "grid.hpp"
+#include "twod/grid.hpp"
 
 namespace granbench::twod {
 

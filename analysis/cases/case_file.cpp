@@ -1,6 +1,6 @@
 // Reading the paper's case files (case_file.hpp) with CLI11's TOML reader, the one the --config
 // option uses, so case files and config files follow the same syntax.
-#include "case_file.hpp"
+#include "analysis/cases/case_file.hpp"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -36,7 +36,9 @@ double parse_number(const std::string& text, const std::string& where) {
 CaseFile::CaseFile(std::string path, std::map<std::string, std::vector<std::string>> values)
     : path_(std::move(path)), values_(std::move(values)) {}
 
-std::string CaseFile::name() const { return std::filesystem::path(path_).stem().string(); }
+std::string CaseFile::name() const {
+  return std::filesystem::path(path_).stem().string();
+}
 
 bool CaseFile::has(const std::string& key, const std::string& resolution) const {
   return (!resolution.empty() && values_.count(resolution + "." + key)) || values_.count(key);
@@ -50,8 +52,9 @@ const std::vector<std::string>& CaseFile::raw(const std::string& key,
   }
   const auto it = values_.find(key);
   if (it == values_.end())
-    throw CaseFileError(path_ + ": key '" + key + "' missing" +
-                        (resolution.empty() ? "" : " (at the top level or under [" + resolution + "])"));
+    throw CaseFileError(
+        path_ + ": key '" + key + "' missing" +
+        (resolution.empty() ? "" : " (at the top level or under [" + resolution + "])"));
   return it->second;
 }
 
@@ -61,7 +64,8 @@ std::string CaseFile::text(const std::string& key, const std::string& resolution
   return unquote(v.front());
 }
 
-std::vector<std::string> CaseFile::texts(const std::string& key, const std::string& resolution) const {
+std::vector<std::string> CaseFile::texts(const std::string& key,
+                                         const std::string& resolution) const {
   std::vector<std::string> out;
   for (const auto& s : raw(key, resolution)) out.push_back(unquote(s));
   return out;
@@ -96,8 +100,8 @@ std::vector<double> CaseFile::numbers(const std::string& key, const std::string&
   return out;
 }
 
-std::map<std::string, std::vector<std::string>> CaseFile::table(const std::string& name,
-                                                              const std::string& resolution) const {
+std::map<std::string, std::vector<std::string>> CaseFile::table(
+    const std::string& name, const std::string& resolution) const {
   std::map<std::string, std::vector<std::string>> out;
   for (const std::string& prefix : {name + ".", resolution + "." + name + "."}) {
     for (const auto& [key, values] : values_) {
@@ -134,7 +138,8 @@ std::vector<CaseFile> list_case_files(const std::string& directory) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(directory, ec))
     if (entry.path().extension() == ".toml") paths.push_back(entry.path().string());
-  if (ec) throw CaseFileError("cannot list the case directory '" + directory + "': " + ec.message());
+  if (ec)
+    throw CaseFileError("cannot list the case directory '" + directory + "': " + ec.message());
   std::sort(paths.begin(), paths.end());
   std::vector<CaseFile> out;
   for (const auto& p : paths) out.push_back(read_case_file(p));

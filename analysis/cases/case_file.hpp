@@ -1,4 +1,4 @@
-// A paper case as a TOML file in cases/ (DESIGN.md: cases/ holds only data). A case file has a
+// A paper case as a TOML file in cases/ (docs/design.md: cases/ holds only data). A case file has a
 // `kind` naming the runner (decelerating, high-speed, rollwave, wellposed), a `title`, the
 // paper's `figures`, keys shared by every resolution at the top level, and keys that depend on
 // the resolution under [smoke] (a reduced version that runs in CI in seconds) and [paper] (the
@@ -41,7 +41,8 @@ class CaseFile {
   std::map<std::string, std::vector<std::string>> table(const std::string& name,
                                                         const std::string& resolution) const;
   // A number within [lo, hi], else CaseFileError naming the key and the range.
-  double number_in(const std::string& key, const std::string& resolution, double lo, double hi) const;
+  double number_in(const std::string& key, const std::string& resolution, double lo,
+                   double hi) const;
 
  private:
   const std::vector<std::string>& raw(const std::string& key, const std::string& resolution) const;

@@ -1,5 +1,5 @@
 // Difference of the downslope-averaged I between two resolutions (grid_dependence.hpp).
-#include "grid_dependence.hpp"
+#include "analysis/cases/grid_dependence.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,10 @@ int bulk_cells(int nz, double Lz, double h0) {
   return std::clamp(int(std::floor((h0 - dz) / dz + 1e-9)), 0, nz);
 }
 
-GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecord& fine, double h0) {
-  if (coarse.nz <= 0 || fine.nz % coarse.nz != 0 || std::abs(fine.Lz - coarse.Lz) > 1e-12 * coarse.Lz)
+GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecord& fine,
+                               double h0) {
+  if (coarse.nz <= 0 || fine.nz % coarse.nz != 0 ||
+      std::abs(fine.Lz - coarse.Lz) > 1e-12 * coarse.Lz)
     throw std::invalid_argument("grid_dependence: the fine grid must refine the coarse one in z");
   const int ratio = fine.nz / coarse.nz;
   const int bulk = bulk_cells(coarse.nz, coarse.Lz, h0);

@@ -11,7 +11,7 @@
 
 #include <vector>
 
-#include "layer_run.hpp"
+#include "analysis/cases/layer_run.hpp"
 
 namespace granbench::cases {
 
@@ -19,8 +19,8 @@ namespace granbench::cases {
 int bulk_cells(int nz, double Lz, double h0);
 
 struct GridDependence {
-  std::vector<double> t;              // common sample times
-  std::vector<double> rms_log10_I;    // [t] (NaN where either profile is missing)
+  std::vector<double> t;            // common sample times
+  std::vector<double> rms_log10_I;  // [t] (NaN where either profile is missing)
 };
 
 // fine.nz must be an integer multiple of coarse.nz, on the same Lz; throws std::invalid_argument.

@@ -1,6 +1,6 @@
 // The decelerating and high-speed paper cases (layer_case.hpp): specification from the case
 // file, the runs (in parallel), the grid dependence, the HDF5 output and the summary.
-#include "layer_case.hpp"
+#include "analysis/cases/layer_case.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -10,8 +10,8 @@
 #include <sstream>
 #include <thread>
 
-#include "hdf5_file.hpp"
-#include "steady_state.hpp"
+#include "common/hdf5_file.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench::cases {
 
@@ -24,7 +24,8 @@ twod::ViscosityMixing parse_mixing(const CaseFile& f, const std::string& res) {
   const std::string m = f.text("mixing", res);
   if (m == "arithmetic") return twod::ViscosityMixing::Arithmetic;
   if (m == "harmonic") return twod::ViscosityMixing::Harmonic;
-  throw CaseFileError(f.path() + ": key 'mixing' = '" + m + "'; valid values {arithmetic,harmonic}");
+  throw CaseFileError(f.path() + ": key 'mixing' = '" + m +
+                      "'; valid values {arithmetic,harmonic}");
 }
 
 CurveKind curve_of(const CaseFile& f, const std::string& key, const std::string& name) {
@@ -45,7 +46,9 @@ double bulk_mean_I(const LayerRunRecord& r, double h0) {
   return n > 0 ? sum / n : nan;
 }
 
-nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
 }  // namespace
 
@@ -82,8 +85,9 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
       LayerRunSpec run;
       run.params = p;
       run.params.rheology.curve = curve_of(f, "curves", curve);
-      run.initial_curve = f.has("initial_curve", res) ? curve_of(f, "initial_curve", f.text("initial_curve", res))
-                                                      : run.params.rheology.curve;
+      run.initial_curve = f.has("initial_curve", res)
+                              ? curve_of(f, "initial_curve", f.text("initial_curve", res))
+                              : run.params.rheology.curve;
       run.initial_zeta = degrees_to_radians(s.angle0_deg);
       run.h0 = s.h0;
       run.nx = int(nx[r]), run.nz = int(nz[r]);
@@ -172,39 +176,43 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
     double steady_I = nan;  // the run curve's own steady I at the run's slope, if one exists
     try {
       steady_I = steady_state(MuCurve(s.params.rheology.curve, s.params.rheology.material, s.h0),
-                              s.params.zeta, s.h0).I_zeta;
+                              s.params.zeta, s.h0)
+                     .I_zeta;
     } catch (const std::exception&) {
     }
     double I_lo = INFINITY, I_hi = 0.0;
     for (const auto& field : r.I_field)
       for (double v : field)
         if (std::isfinite(v) && v > 0.0) I_lo = std::min(I_lo, v), I_hi = std::max(I_hi, v);
-    runs.push_back({{"label", r.label},
-                    {"curve", std::string(curve_name(s.params.rheology.curve))},
-                    {"nx", r.nx},
-                    {"nz", r.nz},
-                    {"status", r.status},
-                    {"message", r.message},
-                    {"t_reached", r.t_reached},
-                    {"steps", r.steps},
-                    {"wall_seconds", r.wall_seconds},
-                    {"mass_error", r.mass_error},
-                    {"initial_I", r.initial_I},
-                    {"steady_I", finite_or_null(steady_I)},
-                    {"final_bulk_I", finite_or_null(bulk_mean_I(r, s.h0))},
-                    {"final_max_speed", r.max_speed.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.max_speed.back())},
-                    {"final_illposed_fraction", r.illposed_fraction.empty() ? nlohmann::json(nullptr)
-                                                                            : nlohmann::json(r.illposed_fraction.back())},
-                    {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nlohmann::json(nullptr)}});
+    runs.push_back(
+        {{"label", r.label},
+         {"curve", std::string(curve_name(s.params.rheology.curve))},
+         {"nx", r.nx},
+         {"nz", r.nz},
+         {"status", r.status},
+         {"message", r.message},
+         {"t_reached", r.t_reached},
+         {"steps", r.steps},
+         {"wall_seconds", r.wall_seconds},
+         {"mass_error", r.mass_error},
+         {"initial_I", r.initial_I},
+         {"steady_I", finite_or_null(steady_I)},
+         {"final_bulk_I", finite_or_null(bulk_mean_I(r, s.h0))},
+         {"final_max_speed",
+          r.max_speed.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.max_speed.back())},
+         {"final_illposed_fraction", r.illposed_fraction.empty()
+                                         ? nlohmann::json(nullptr)
+                                         : nlohmann::json(r.illposed_fraction.back())},
+         {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nlohmann::json(nullptr)}});
   }
-  out.summary = {{"case", spec.name},        {"title", spec.title},
-                 {"resolution", spec.resolution}, {"h0", spec.h0},
-                 {"angle0", spec.angle0_deg}, {"angle", spec.angle_deg},
-                 {"runs", runs},             {"grid_dependence", gd}};
+  out.summary = {{"case", spec.name}, {"title", spec.title},       {"resolution", spec.resolution},
+                 {"h0", spec.h0},     {"angle0", spec.angle0_deg}, {"angle", spec.angle_deg},
+                 {"runs", runs},      {"grid_dependence", gd}};
   return out;
 }
 
-void write_layer_case(const std::string& path, const LayerCaseSpec& spec, const LayerCaseResult& r) {
+void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
+                      const LayerCaseResult& r) {
   H5Writer out(path);
   out.attribute("/", "case", spec.name);
   out.attribute("/", "title", spec.title);
@@ -253,8 +261,10 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec, const 
     out.attribute(g, "eta_max", s.params.rheology.eta_max);
     out.attribute(g, "eta_min", s.params.rheology.eta_min);
     out.attribute(g, "D_min", s.params.rheology.D_min);
-    out.attribute(g, "mixing", std::string(s.params.rheology.mixing == twod::ViscosityMixing::Harmonic
-                                               ? "harmonic" : "arithmetic"));
+    out.attribute(
+        g, "mixing",
+        std::string(s.params.rheology.mixing == twod::ViscosityMixing::Harmonic ? "harmonic"
+                                                                                : "arithmetic"));
   }
   for (std::size_t n = 0; n < r.grid_dependence.size(); ++n) {
     const auto& [curve, d] = r.grid_dependence[n];

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "case_file.hpp"
-#include "grid_dependence.hpp"
-#include "layer_run.hpp"
+#include "analysis/cases/case_file.hpp"
+#include "analysis/cases/grid_dependence.hpp"
+#include "analysis/cases/layer_run.hpp"
 
 namespace granbench::cases {
 

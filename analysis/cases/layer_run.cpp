@@ -1,17 +1,17 @@
 // The uniform-layer run of §5.2 and §6.2 (layer_run.hpp): initial Bagnold state of one curve and
 // slope, then the 2D run (twod/run.hpp) with evenly spaced samples, each recorded here.
-#include "layer_run.hpp"
+#include "analysis/cases/layer_run.hpp"
 
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "diagnostics.hpp"
-#include "initial_state.hpp"
-#include "properties.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/properties.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 namespace granbench::cases {
 
@@ -56,7 +56,8 @@ void take_sample(const twod::Solver& solver, LayerRunRecord& r) {
 LayerRunRecord run_layer(const LayerRunSpec& spec, const LayerRunProgress& progress) {
   const Material& material = spec.params.rheology.material;
   const MuCurve initial_curve(spec.initial_curve, material, spec.h0);
-  const SteadyState initial = steady_state(initial_curve, spec.initial_zeta, spec.h0);  // (5.4)-(5.5)
+  const SteadyState initial =
+      steady_state(initial_curve, spec.initial_zeta, spec.h0);  // (5.4)-(5.5)
   const twod::Grid grid(spec.nx, spec.nz, spec.Lx, spec.Lz);
   twod::Fields start =
       twod::make_initial_state(grid, twod::perturbed_bagnold(initial, 0.0, spec.Lx), spec.params);

@@ -17,23 +17,23 @@
 #include <string>
 #include <vector>
 
-#include "mu_curves.hpp"
-#include "parameters.hpp"
+#include "common/mu_curves.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::cases {
 
 struct LayerRunSpec {
-  std::string label;              // e.g. "jop_64x64"
+  std::string label;  // e.g. "jop_64x64"
   CurveKind initial_curve = CurveKind::Jop;
-  double initial_zeta = 0.0;      // slope of the initial Bagnold state [rad]
-  twod::SolverParams params;      // the run's curve, slope, eta cap, ...
-  double h0 = 4e-3;               // layer depth [m]
+  double initial_zeta = 0.0;  // slope of the initial Bagnold state [rad]
+  twod::SolverParams params;  // the run's curve, slope, eta cap, ...
+  double h0 = 4e-3;           // layer depth [m]
   int nx = 64, nz = 64;
-  double Lx = 8e-3, Lz = 8e-3;    // [m]
-  double t_end = 0.2;             // [s]
-  int samples = 11;               // evenly spaced sample times, both ends included
-  double noise = 0.0;             // relative amplitude of the random noise on the initial u
-  unsigned seed = 1;              // of the noise
+  double Lx = 8e-3, Lz = 8e-3;  // [m]
+  double t_end = 0.2;           // [s]
+  int samples = 11;             // evenly spaced sample times, both ends included
+  double noise = 0.0;           // relative amplitude of the random noise on the initial u
+  unsigned seed = 1;            // of the noise
 };
 
 struct LayerRunRecord {
@@ -44,14 +44,14 @@ struct LayerRunRecord {
   long steps = 0;
   int nx = 0, nz = 0;
   double Lx = 0.0, Lz = 0.0;
-  double initial_I = 0.0;            // I_zeta of the initial state
-  std::vector<double> t;             // sample times
-  std::vector<double> z;             // cell-centre heights [nz]
-  std::vector<std::vector<double>> u_profile;   // [sample][nz]: mean over x of u
-  std::vector<std::vector<double>> I_profile;   // [sample][nz]: mean of I over granular cells
-  std::vector<std::vector<double>> I_field;     // [sample][nz * nx] (NaN outside the grains)
-  std::vector<double> max_speed;                // [sample] max |u| [m/s]
-  std::vector<double> illposed_fraction;        // [sample] granular volume with C(I) > 0
+  double initial_I = 0.0;                      // I_zeta of the initial state
+  std::vector<double> t;                       // sample times
+  std::vector<double> z;                       // cell-centre heights [nz]
+  std::vector<std::vector<double>> u_profile;  // [sample][nz]: mean over x of u
+  std::vector<std::vector<double>> I_profile;  // [sample][nz]: mean of I over granular cells
+  std::vector<std::vector<double>> I_field;    // [sample][nz * nx] (NaN outside the grains)
+  std::vector<double> max_speed;               // [sample] max |u| [m/s]
+  std::vector<double> illposed_fraction;       // [sample] granular volume with C(I) > 0
 };
 
 struct LayerRunProgress {

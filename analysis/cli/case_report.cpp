@@ -1,5 +1,5 @@
 // The text summary of `granbench case` (case_report.hpp).
-#include "case_report.hpp"
+#include "analysis/cli/case_report.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -10,7 +10,8 @@ namespace granbench::cli {
 void print_summary(const std::string& kind, const nlohmann::json& j) {
   std::cout << "case " << j.value("case", std::string()) << " (" << kind << ")\n";
   if (j.contains("runs")) {
-    std::cout << "  run                 status      t [s]   steps   initial I   final bulk I   steady I   "
+    std::cout << "  run                 status      t [s]   steps   initial I   final bulk I   "
+                 "steady I   "
                  "ill-posed   wall [s]\n";
     for (const auto& r : j["runs"]) {
       auto num = [](const nlohmann::json& v) {
@@ -22,9 +23,10 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
       char line[256];
       std::snprintf(line, sizeof line, "  %-18s  %-10s  %5.3f  %6ld  %10s  %13s  %9s  %9s  %8.1f\n",
                     r["label"].get<std::string>().c_str(), r["status"].get<std::string>().c_str(),
-                    r["t_reached"].get<double>(), r["steps"].get<long>(), num(r["initial_I"]).c_str(),
-                    num(r["final_bulk_I"]).c_str(), num(r["steady_I"]).c_str(),
-                    num(r["final_illposed_fraction"]).c_str(), r["wall_seconds"].get<double>());
+                    r["t_reached"].get<double>(), r["steps"].get<long>(),
+                    num(r["initial_I"]).c_str(), num(r["final_bulk_I"]).c_str(),
+                    num(r["steady_I"]).c_str(), num(r["final_illposed_fraction"]).c_str(),
+                    r["wall_seconds"].get<double>());
       std::cout << line;
       if (!r["message"].get<std::string>().empty())
         std::cout << "      " << r["message"].get<std::string>() << "\n";
@@ -35,7 +37,8 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
       for (std::size_t n = 0; n < v.size(); n += std::max<std::size_t>(1, v.size() / 5))
         std::cout << "  t=" << d["t"][n].get<double>() << ": "
                   << (v[n].is_null() ? std::string("-") : std::to_string(v[n].get<double>()));
-      std::cout << "  (end: " << (v.back().is_null() ? std::string("-") : std::to_string(v.back().get<double>()))
+      std::cout << "  (end: "
+                << (v.back().is_null() ? std::string("-") : std::to_string(v.back().get<double>()))
                 << ")\n";
     }
   }
@@ -44,7 +47,8 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
     std::cout << "  status " << r.value("status", std::string("?")) << ", t reached "
               << r.value("t_reached", 0.0) << " s, wall " << r.value("wall_seconds", 0.0) << " s\n";
     for (const char* key : {"growth_rate", "phase_speed", "wave_speed", "mass_error"})
-      if (r.contains(key) && !r[key].is_null()) std::cout << "  " << key << " " << r[key].dump() << "\n";
+      if (r.contains(key) && !r[key].is_null())
+        std::cout << "  " << key << " " << r[key].dump() << "\n";
   }
   if (j.contains("outputs"))
     for (const auto& f : j["outputs"]) std::cout << "  wrote " << f.get<std::string>() << "\n";

@@ -1,15 +1,15 @@
 // Shared command-line pieces: validators, flow/material options, JSON printing, plotting.
-#include "cli_common.hpp"
+#include "analysis/cli/cli_common.hpp"
 
 #include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
-#include "parallel.hpp"
+#include "twod/parallel.hpp"
 
 namespace granbench::cli {
 
@@ -21,7 +21,9 @@ std::string fmt(double v) {
 }
 }  // namespace
 
-CLI::Validator positive() { return open_range(0.0, std::numeric_limits<double>::infinity()); }
+CLI::Validator positive() {
+  return open_range(0.0, std::numeric_limits<double>::infinity());
+}
 
 CLI::Validator open_range(double lo, double hi) {
   const std::string range = "(" + fmt(lo) + ", " + fmt(hi) + ")";
@@ -53,7 +55,9 @@ CLI::Validator one_of(const std::vector<std::string>& values) {
       "{" + list + "}", "one_of");
 }
 
-CurveKind FlowOptions::curve_kind() const { return parse_curve_name(curve); }
+CurveKind FlowOptions::curve_kind() const {
+  return parse_curve_name(curve);
+}
 
 MuCurve FlowOptions::make_curve() const {
   // Some material values leave no curve of this kind to build (the regularised and low-I curves
@@ -61,8 +65,9 @@ MuCurve FlowOptions::make_curve() const {
   try {
     return MuCurve(curve_kind(), material, h0);
   } catch (const std::runtime_error& e) {
-    throw UsageError("--curve: the " + curve + " curve cannot be built from these material values (" +
-                     e.what() + "); valid: --mu-s, --mu-d, --I0, --alpha for which it exists, or another --curve");
+    throw UsageError(
+        "--curve: the " + curve + " curve cannot be built from these material values (" + e.what() +
+        "); valid: --mu-s, --mu-d, --I0, --alpha for which it exists, or another --curve");
   }
 }
 
@@ -88,18 +93,51 @@ void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
   app.add_option("--h0", o.h0, "flow depth h0 [m], > 0")->check(positive())->capture_default_str();
   Material& m = o.material;
   const std::string g = "Material (table 1)";
-  app.add_option("--mu-s", m.mu_s, "static friction mu_s")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--mu-d", m.mu_d, "dynamic friction mu_d")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--I0", m.I0, "inertial-number scale I0")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--d", m.d, "grain diameter d [m]")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--phi", m.phi, "solids volume fraction phi, in (0, 1)")->check(open_range(0.0, 1.0))->group(g)->capture_default_str();
-  app.add_option("--rho-star", m.rho_star, "grain density [kg/m^3]")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--mu-s", m.mu_s, "static friction mu_s")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--mu-d", m.mu_d, "dynamic friction mu_d")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--I0", m.I0, "inertial-number scale I0")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--d", m.d, "grain diameter d [m]")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--phi", m.phi, "solids volume fraction phi, in (0, 1)")
+      ->check(open_range(0.0, 1.0))
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--rho-star", m.rho_star, "grain density [kg/m^3]")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
   app.add_option("--g", m.g, "gravity [m/s^2]")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3), > 0")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--alpha", m.alpha, "low-I regularisation alpha of (5.2)/(6.3), in (0, 2)")->check(open_range(0.0, 2.0))->group(g)->capture_default_str();
-  app.add_option("--kk-mu0", m.kk_mu0, "Kamrin-Koval mu_0 of (5.1)")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--kk-cK", m.kk_cK, "Kamrin-Koval c_K of (5.1)")->check(positive())->group(g)->capture_default_str();
-  app.add_option("--hm-c", m.hm_c, "Holyoake-McElwaine c of (6.1)")->check(positive())->group(g)->capture_default_str();
+  app.add_option("--mu-inf", m.mu_inf, "high-I coefficient mu_inf of (6.3), > 0")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--alpha", m.alpha, "low-I regularisation alpha of (5.2)/(6.3), in (0, 2)")
+      ->check(open_range(0.0, 2.0))
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--kk-mu0", m.kk_mu0, "Kamrin-Koval mu_0 of (5.1)")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--kk-cK", m.kk_cK, "Kamrin-Koval c_K of (5.1)")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
+  app.add_option("--hm-c", m.hm_c, "Holyoake-McElwaine c of (6.1)")
+      ->check(positive())
+      ->group(g)
+      ->capture_default_str();
   // Every curve rises from mu_s to mu_d: with mu_s >= mu_d there is no curve, and the errors
   // would come later, blamed on --angle.
   app.parse_complete_callback([&m] {
@@ -118,7 +156,8 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
   if (with_plot) app.add_option("--plot", o.plot, "draw the figure into this PNG file");
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   // Expanded into options before parsing (config_file.hpp); declared here for --help.
-  app.add_option("--config")->description("read options from a TOML file (the command line overrides it)");
+  app.add_option("--config")
+      ->description("read options from a TOML file (the command line overrides it)");
 }
 
 void add_threads_option(CLI::App& app) {
@@ -145,7 +184,9 @@ nlohmann::json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
-void print_json(const nlohmann::json& j) { std::cout << j.dump(2) << std::endl; }
+void print_json(const nlohmann::json& j) {
+  std::cout << j.dump(2) << std::endl;
+}
 
 void run_plot_script(const std::string& script, const std::string& h5, const std::string& png,
                      const std::string& extra_args) {
@@ -153,9 +194,12 @@ void run_plot_script(const std::string& script, const std::string& h5, const std
   const std::string cmd = python + " '" + std::string(GRANBENCH_PLOT_DIR) + "/" + script + "' '" +
                           h5 + "' '" + png + "' " + extra_args;
   if (std::system(cmd.c_str()) != 0)
-    throw std::runtime_error("plotting failed (" + cmd + "); needs python3-matplotlib, python3-h5py");
+    throw std::runtime_error("plotting failed (" + cmd +
+                             "); needs python3-matplotlib, python3-h5py");
 }
 
-bool progress_enabled(const OutputOptions& o) { return !o.quiet && isatty(STDERR_FILENO); }
+bool progress_enabled(const OutputOptions& o) {
+  return !o.quiet && isatty(STDERR_FILENO);
+}
 
 }  // namespace granbench::cli

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "material.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
+#include "common/material.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench::cli {
 
@@ -20,8 +20,8 @@ struct UsageError : std::runtime_error {
 };
 
 // Validators whose messages name the valid range.
-CLI::Validator positive();            // (0, inf)
-CLI::Validator open_range(double lo, double hi);  // (lo, hi)
+CLI::Validator positive();                                      // (0, inf)
+CLI::Validator open_range(double lo, double hi);                // (lo, hi)
 CLI::Validator one_of(const std::vector<std::string>& values);  // {a,b,...}
 
 // Options shared by wellposed/steady/dispersion/run/sweep/compare.
@@ -59,7 +59,7 @@ nlohmann::json number_or_null(double v);
 // Run a plotting script from analysis/plots with Debian's python3: script data.h5 out.png [args].
 void run_plot_script(const std::string& script, const std::string& h5, const std::string& png,
                      const std::string& extra_args = "");
-// Show progress only on a terminal and without --quiet (DESIGN.md).
+// Show progress only on a terminal and without --quiet (docs/design.md).
 bool progress_enabled(const OutputOptions& o);
 
 }  // namespace granbench::cli

@@ -17,15 +17,15 @@
 #include <filesystem>
 #include <iostream>
 
-#include "case_file.hpp"
-#include "case_report.hpp"
-#include "cli_common.hpp"
-#include "failure_policy.hpp"
-#include "commands.hpp"
-#include "layer_case.hpp"
-#include "output_checks.hpp"
-#include "run_model.hpp"
-#include "run_twod.hpp"
+#include "analysis/cases/case_file.hpp"
+#include "analysis/cases/layer_case.hpp"
+#include "analysis/cli/case_report.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/cli/run_twod.hpp"
+#include "common/failure_policy.hpp"
 
 namespace granbench::cli {
 
@@ -60,7 +60,8 @@ nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o,
   // snapshot_time: the time of the I snapshots (the decelerating layer is at rest by the end).
   plot_run("case_layer.py", h5, png_prefix,
            file.has("snapshot_time", o.resolution)
-               ? std::to_string(file.number("snapshot_time", o.resolution)) : "",
+               ? std::to_string(file.number("snapshot_time", o.resolution))
+               : "",
            exit_code == 0);
   nlohmann::json j = result.summary;
   j["outputs"] = {h5, png_prefix + "_profiles.png", png_prefix + "_snapshots.png"};
@@ -89,7 +90,8 @@ void parse_run_table(const cases::CaseFile& file, const std::string& resolution,
 }
 
 // The rollwave cases (§7): `granbench run --model twod` with the file's [run] options.
-nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code) {
+nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions& o,
+                                 int& exit_code) {
   const std::string h5 = path_in(o, file.name() + ".h5");
   RunOptions run;
   TwodOptions twod;
@@ -117,12 +119,14 @@ nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions&
   const double probe_x = file.number("probe_x", o.resolution);
   const std::vector<double> window = file.numbers("probe_window", o.resolution);
   const double field_time = file.number("field_time", o.resolution);
-  if (window.size() != 2) throw cases::CaseFileError(file.path() + ": key 'probe_window' must be [t0, t1]");
+  if (window.size() != 2)
+    throw cases::CaseFileError(file.path() + ": key 'probe_window' must be [t0, t1]");
   plot_run("case_rollwave.py", h5, png_prefix,
            std::to_string(probe_x) + " " + std::to_string(window[0]) + " " +
                std::to_string(window[1]) + " " + std::to_string(field_time),
            exit_code == 0);
-  j["outputs"] = {h5, png_prefix + "_fields.png", png_prefix + "_streamlines.png", png_prefix + "_surface.png"};
+  j["outputs"] = {h5, png_prefix + "_fields.png", png_prefix + "_streamlines.png",
+                  png_prefix + "_surface.png"};
   return j;
 }
 
@@ -149,7 +153,8 @@ void run_case(const CaseOptions& o) {
   const std::string path = (std::filesystem::path(o.cases_dir) / (o.name + ".toml")).string();
   if (!std::filesystem::exists(path)) {
     std::string names;
-    for (const auto& f : cases::list_case_files(o.cases_dir)) names += (names.empty() ? "" : ",") + f.name();
+    for (const auto& f : cases::list_case_files(o.cases_dir))
+      names += (names.empty() ? "" : ",") + f.name();
     throw UsageError("NAME: unknown case '" + o.name + "'; valid values {" + names + "}");
   }
   std::error_code ec;
@@ -162,34 +167,46 @@ void run_case(const CaseOptions& o) {
   try {
     const cases::CaseFile file = cases::read_case_file(path);
     kind = file.text("kind");
-    if (kind == "decelerating" || kind == "high-speed") j = run_layer_kind(file, o, exit_code);
-    else if (kind == "rollwave") j = run_rollwave_kind(file, o, exit_code);
-    else if (kind == "wellposed") j = run_wellposed_kind(file, o);
-    else throw cases::CaseFileError(path + ": key 'kind' = '" + kind +
-                                    "'; valid values {decelerating,high-speed,rollwave,wellposed}");
+    if (kind == "decelerating" || kind == "high-speed")
+      j = run_layer_kind(file, o, exit_code);
+    else if (kind == "rollwave")
+      j = run_rollwave_kind(file, o, exit_code);
+    else if (kind == "wellposed")
+      j = run_wellposed_kind(file, o);
+    else
+      throw cases::CaseFileError(path + ": key 'kind' = '" + kind +
+                                 "'; valid values {decelerating,high-speed,rollwave,wellposed}");
   } catch (const cases::CaseFileError& e) {
     throw UsageError(std::string("case file ") + e.what());
   }
   j["kind"] = kind;
-  if (o.output.json) print_json(j);
-  else print_summary(kind, j);
+  if (o.output.json)
+    print_json(j);
+  else
+    print_summary(kind, j);
   if (exit_code == kExitSigint || exit_code == kExitSigterm)
     throw CommandFailed("interrupted; the samples computed so far were kept", exit_code);
-  if (exit_code != 0) throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")", exit_code);
+  if (exit_code != 0)
+    throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")",
+                        exit_code);
 }
 
 }  // namespace
 
 void add_case_command(CLI::App& app) {
   auto o = std::make_shared<CaseOptions>();
-  CLI::App* sub = app.add_subcommand("case", "run one of the paper's cases (cases/*.toml) and draw its figures");
+  CLI::App* sub = app.add_subcommand(
+      "case", "run one of the paper's cases (cases/*.toml) and draw its figures");
   sub->add_option("name", o->name, "case name (see --list)");
   sub->add_flag("--list", o->list, "list the cases");
-  sub->add_option("--resolution", o->resolution, "resolution {smoke,paper}: the CI version or the full case")
+  sub->add_option("--resolution", o->resolution,
+                  "resolution {smoke,paper}: the CI version or the full case")
       ->check(one_of({"smoke", "paper"}))
       ->capture_default_str();
-  sub->add_option("--out-dir", o->out_dir, "directory for the HDF5 files and figures")->capture_default_str();
-  sub->add_option("--cases-dir", o->cases_dir, "directory of the case files")->capture_default_str();
+  sub->add_option("--out-dir", o->out_dir, "directory for the HDF5 files and figures")
+      ->capture_default_str();
+  sub->add_option("--cases-dir", o->cases_dir, "directory of the case files")
+      ->capture_default_str();
   sub->add_option("--jobs", o->jobs, "runs of a case computed at once, in [1, 256]")
       ->check(CLI::Range(1u, 256u))
       ->capture_default_str();

@@ -1,25 +1,25 @@
-// granbench compare: the main job. One chute flow (§7 defaults: 28.5 deg, h0 = 4 mm, Lz ~ 2 h0 with h0
-// mid-cell, regularised curve) run with both models on the same rheology, each measured with the same
-// analysis code, beside the exact linear theories at the same k_hat: (7.11), its chi = 5/4 form
-// and the 2D linear stability. Prints the side-by-side table (or --json), writes compare.h5 (both
-// SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
+// granbench compare: the main job. One chute flow (§7 defaults: 28.5 deg, h0 = 4 mm, Lz ~ 2 h0 with
+// h0 mid-cell, regularised curve) run with both models on the same rheology, each measured with the
+// same analysis code, beside the exact linear theories at the same k_hat: (7.11), its chi = 5/4
+// form and the 2D linear stability. Prints the side-by-side table (or --json), writes compare.h5
+// (both SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
 #include <cmath>
 #include <filesystem>
-#include <numbers>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <stdexcept>
 
-#include "cli_common.hpp"
-#include "commands.hpp"
-#include "compare.hpp"
-#include "compare_output.hpp"
-#include "measurement.hpp"
-#include "compare_report.hpp"
-#include "output_checks.hpp"
-#include "run_model.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/compare_report.hpp"
+#include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/comparison/compare.hpp"
+#include "analysis/comparison/compare_output.hpp"
+#include "analysis/spectral/measurement.hpp"
 
 namespace granbench::cli {
 
@@ -35,8 +35,8 @@ struct CompareOptions {
   double t_end = 2.0;
   double dt_out = 0.0;
   std::string resolution = "default";
-  int nx = 0, nz = 0;          // 2D grid; 0: from --resolution
-  std::size_t nx_depthavg = 0; // 0: from --resolution
+  int nx = 0, nz = 0;                  // 2D grid; 0: from --resolution
+  std::size_t nx_depthavg = 0;         // 0: from --resolution
   std::string frame_speed = "linear";  // depth-averaged frame: linear (co-moving) or 0 (lab)
   int viscosity_passes = 1;
 };
@@ -119,13 +119,16 @@ void run_compare(const CompareOptions& o) {
   if (o.output.json) {
     print_json({{"Lx", chute.Lx},
                 {"k_hat", c.theory.k_hat},
-                {"exact", {{"growth_rate", c.theory.exact.growth_rate},
-                           {"phase_speed", c.theory.exact.phase_speed}}},
-                {"exact_bagnold", {{"growth_rate", c.theory.exact_bagnold.growth_rate},
-                                   {"phase_speed", c.theory.exact_bagnold.phase_speed}}},
-                {"exact_2d", {{"growth_rate", c.theory.exact_2d.growth_rate},
-                              {"phase_speed", c.theory.exact_2d.phase_speed},
-                              {"convergence", c.theory.exact_2d_convergence}}},
+                {"exact",
+                 {{"growth_rate", c.theory.exact.growth_rate},
+                  {"phase_speed", c.theory.exact.phase_speed}}},
+                {"exact_bagnold",
+                 {{"growth_rate", c.theory.exact_bagnold.growth_rate},
+                  {"phase_speed", c.theory.exact_bagnold.phase_speed}}},
+                {"exact_2d",
+                 {{"growth_rate", c.theory.exact_2d.growth_rate},
+                  {"phase_speed", c.theory.exact_2d.phase_speed},
+                  {"convergence", c.theory.exact_2d_convergence}}},
                 {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
                 {"twod", model_json(c.twod, c.twod_measured)},
                 {"twod_viscosity_passes", twod.viscosity_passes},
@@ -155,16 +158,25 @@ void add_compare_command(CLI::App& app) {
   add_output_options(*sub, o->output);
   add_threads_option(*sub);
   sub->footer(exit_codes_help());
-  sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")->check(positive())->capture_default_str();
-  sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")->check(positive())->capture_default_str();
+  sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")
+      ->check(positive())
+      ->capture_default_str();
   sub->add_flag("--paper", o->paper, "the paper's start: sine (7.2) with a0 = 0.2 mm");
   sub->add_option("--init", o->init, "initial perturbation {eigenmode,sine}")
-      ->check(one_of({"eigenmode", "sine"}))->capture_default_str();
-  sub->add_option("--t-end", o->t_end, "simulated time [s], > 0")->check(positive())->capture_default_str();
-  sub->add_option("--dt-out", o->dt_out, "sampling interval [s], > 0 (default: automatic)")->check(positive());
+      ->check(one_of({"eigenmode", "sine"}))
+      ->capture_default_str();
+  sub->add_option("--t-end", o->t_end, "simulated time [s], > 0")
+      ->check(positive())
+      ->capture_default_str();
+  sub->add_option("--dt-out", o->dt_out, "sampling interval [s], > 0 (default: automatic)")
+      ->check(positive());
   sub->add_option("--resolution", o->resolution,
                   "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
-      ->check(one_of({"coarse", "default", "fine"}))->capture_default_str();
+      ->check(one_of({"coarse", "default", "fine"}))
+      ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
   sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), in [8, 65536]")
       ->check(CLI::Range(8, 65536));

@@ -1,6 +1,6 @@
 // granbench dispersion: exact linear theory for perturbations of wavelength Lx of the steady
 // flow. --theory depthavg is the paper's relation (7.11) (chi = 1), depthavg-bagnold the same
-// with the Bagnold shape factor chi = 5/4 (DESIGN.md §10), twod the full 2D linear stability.
+// with the Bagnold shape factor chi = 5/4 (docs/design.md §10), twod the full 2D linear stability.
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -8,15 +8,15 @@
 #include <numbers>
 #include <optional>
 
-#include "cli_common.hpp"
-#include "help_footer.hpp"
-#include "commands.hpp"
-#include "dispersion.hpp"
-#include "dispersion_curve.hpp"
-#include "dispersion_twod.hpp"
-#include "hdf5_file.hpp"
-#include "parameters.hpp"
-#include "steady_state.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/dispersion_twod.hpp"
+#include "analysis/cli/help_footer.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "analysis/theory/dispersion_curve.hpp"
+#include "common/hdf5_file.hpp"
+#include "common/steady_state.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench::cli {
 

@@ -8,15 +8,17 @@
 // and has its own run_<model>.cpp. The model is chosen once, here.
 #include <memory>
 
-#include "cli_common.hpp"
-#include "failure_policy.hpp"
-#include "commands.hpp"
-#include "run_model.hpp"
-#include "run_twod.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/cli/run_twod.hpp"
+#include "common/failure_policy.hpp"
 
 namespace granbench::cli {
 
-std::vector<std::string> model_names() { return {"depthavg", "twod"}; }
+std::vector<std::string> model_names() {
+  return {"depthavg", "twod"};
+}
 
 Model parse_model(const std::string& name) {
   if (name == "depthavg") return Model::DepthAvg;
@@ -29,7 +31,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--model", o.model, "model {depthavg,twod}")
       ->check(one_of(model_names()))
       ->capture_default_str();
-  app.add_option("--Lx", o.Lx, "domain length Lx [m], > 0")->check(positive())->capture_default_str();
+  app.add_option("--Lx", o.Lx, "domain length Lx [m], > 0")
+      ->check(positive())
+      ->capture_default_str();
   app.add_option("--nx", o.nx, "cells along x, in [8, 1048576]")
       ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20))
       ->capture_default_str();
@@ -39,7 +43,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--mode", o.mode, "wavelengths of the perturbation in the domain, in [1, nx/2]")
       ->check(CLI::Range(1, 1 << 19))
       ->capture_default_str();
-  app.add_option("--init", o.init, "initial state {sine,eigenmode}: (7.2) or the normal mode (7.10)")
+  app.add_option("--init", o.init,
+                 "initial state {sine,eigenmode}: (7.2) or the normal mode (7.10)")
       ->check(one_of({"sine", "eigenmode"}))
       ->capture_default_str();
   app.add_option("--noise", o.noise, "random height noise as a fraction of h0, in [0, 0.5)")

@@ -1,16 +1,16 @@
 // granbench steady: the steady uniform Bagnold flow for a slope and depth (§5.2, §7): I_zeta,
 // surface and mean speeds (5.5), Froude number (7.1) and the depth-averaged coefficients
-// R (7.6), Gamma (7.9a), nu (7.5), generalised to the chosen curve (DESIGN.md §4).
+// R (7.6), Gamma (7.9a), nu (7.5), generalised to the chosen curve (docs/design.md §4).
 #include <iomanip>
 #include <iostream>
 #include <memory>
 
-#include "cli_common.hpp"
-#include "help_footer.hpp"
-#include "commands.hpp"
-#include "dispersion.hpp"
-#include "hdf5_file.hpp"
-#include "steady_state.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/help_footer.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/hdf5_file.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench::cli {
 
@@ -35,8 +35,12 @@ void run_steady(const SteadyOptions& o) {
     out.write("profile/z", z);
     out.write("profile/u", u);
     out.write("profile/p", p);
-    for (auto [k, v] : {std::pair{"I_zeta", s.I_zeta}, {"u_surface", s.u_surface},
-                        {"u_mean", s.u_mean}, {"Fr", s.Fr}, {"R", s.R}, {"Gamma", s.Gamma},
+    for (auto [k, v] : {std::pair{"I_zeta", s.I_zeta},
+                        {"u_surface", s.u_surface},
+                        {"u_mean", s.u_mean},
+                        {"Fr", s.Fr},
+                        {"R", s.R},
+                        {"Gamma", s.Gamma},
                         {"nu", s.nu}})
       out.attribute("/", k, v);
     write_flow_inputs(out, o.flow.curve, o.flow.material, o.flow.angle_deg, s.h0);
@@ -44,13 +48,20 @@ void run_steady(const SteadyOptions& o) {
   }
   const double Fc = critical_froude(1.0);
   if (o.output.json) {
-    nlohmann::json j{{"curve", o.flow.curve},       {"angle", o.flow.angle_deg},
-                     {"h0", s.h0},                  {"I_zeta", s.I_zeta},
-                     {"u_surface", s.u_surface},    {"u_mean", s.u_mean},
-                     {"Fr", s.Fr},                  {"R", s.R},
-                     {"Gamma", s.Gamma},            {"gamma", s.gamma},
-                     {"nu", s.nu},                  {"C", s.C},
-                     {"well_posed", s.well_posed},  {"long_wave_unstable", s.Fr > Fc}};
+    nlohmann::json j{{"curve", o.flow.curve},
+                     {"angle", o.flow.angle_deg},
+                     {"h0", s.h0},
+                     {"I_zeta", s.I_zeta},
+                     {"u_surface", s.u_surface},
+                     {"u_mean", s.u_mean},
+                     {"Fr", s.Fr},
+                     {"R", s.R},
+                     {"Gamma", s.Gamma},
+                     {"gamma", s.gamma},
+                     {"nu", s.nu},
+                     {"C", s.C},
+                     {"well_posed", s.well_posed},
+                     {"long_wave_unstable", s.Fr > Fc}};
     print_json(j);
     return;
   }
@@ -59,8 +70,8 @@ void run_steady(const SteadyOptions& o) {
             << "  I_zeta     " << s.I_zeta << "   (mu(I_zeta) = tan zeta)\n"
             << "  u_surface  " << s.u_surface << " m/s   (5.5)\n"
             << "  u_mean     " << s.u_mean << " m/s\n"
-            << "  Fr         " << s.Fr << "   (7.1); long waves "
-            << (s.Fr > Fc ? "grow" : "decay") << " in the depth-averaged model (Fr_c = 2/3)\n"
+            << "  Fr         " << s.Fr << "   (7.1); long waves " << (s.Fr > Fc ? "grow" : "decay")
+            << " in the depth-averaged model (Fr_c = 2/3)\n"
             << "  R          " << s.R << "   (7.6)\n"
             << "  Gamma      " << s.Gamma << "   (7.9a)\n"
             << "  nu         " << s.nu << " m^1/2 s^-1   (7.5)\n"

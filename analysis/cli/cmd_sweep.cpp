@@ -6,18 +6,18 @@
 //   granbench sweep --model both --Lx 0.01:0.08:8 --out sweep.h5 --plot fig13.png
 //   mpirun -np 4 granbench sweep --model depthavg --Lx 0.02:0.4:32 --jobs 1 --out sweep.h5
 //
-// With --model depthavg each point is a clean linear measurement (depthavg/linear_run.hpp): the
-// normal mode (7.10) seeded at amplitude 1e-4 h0, unlimited central reconstruction, tight
-// tolerances, the growth rate and phase speed fitted spectrally over an automatically found
-// window, against (7.11). With --model twod|both each point is a run seeded with the eigenmode of
-// the model's own theory, measured like `compare`. All go through the resumable engine
-// (analysis/comparison/sweep.hpp) on --jobs threads, shared among the ranks under mpirun
-// (sweep_models.hpp): finished points are kept in --out and a re-run skips them. The options and
-// the spec they make: sweep_plan.hpp.
-#include "commands.hpp"
-#include "help_footer.hpp"
-#include "sweep_models.hpp"
-#include "sweep_plan.hpp"
+// With --model depthavg each point is a clean linear measurement
+// (analysis/comparison/depthavg_linear_run.hpp): the normal mode (7.10) seeded at amplitude 1e-4
+// h0, unlimited central reconstruction, tight tolerances, the growth rate and phase speed fitted
+// spectrally over an automatically found window, against (7.11). With --model twod|both each point
+// is a run seeded with the eigenmode of the model's own theory, measured like `compare`. All go
+// through the resumable engine (analysis/comparison/sweep.hpp) on --jobs threads, shared among the
+// ranks under mpirun (sweep_models.hpp): finished points are kept in --out and a re-run skips them.
+// The options and the spec they make: sweep_plan.hpp.
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/help_footer.hpp"
+#include "analysis/cli/sweep_models.hpp"
+#include "analysis/cli/sweep_plan.hpp"
 
 namespace granbench::cli {
 

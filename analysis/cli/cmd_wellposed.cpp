@@ -8,10 +8,10 @@
 #include <iostream>
 #include <memory>
 
-#include "cli_common.hpp"
-#include "help_footer.hpp"
-#include "commands.hpp"
-#include "wellposedness_figures.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/help_footer.hpp"
+#include "analysis/theory/wellposedness_figures.hpp"
 
 namespace granbench::cli {
 
@@ -36,7 +36,8 @@ nlohmann::json wellposed(const WellposedOptions& o, const MuCurve& curve,
       H5Writer out(h5);
       write_well_posedness_figures(out, fig);
       // No slope here: the curve and the material (and h0, which the Holyoake curve uses).
-      write_flow_inputs(out, std::string(curve_name(curve.kind())), o.flow.material, NAN, o.flow.h0);
+      write_flow_inputs(out, std::string(curve_name(curve.kind())), o.flow.material, NAN,
+                        o.flow.h0);
       out.close();
     }
     if (!o.output.plot.empty()) {
@@ -71,8 +72,10 @@ void run_wellposed(const WellposedOptions& o) {
   }
   auto show = [](const std::optional<double>& v) {
     std::ostringstream s;
-    if (v) s << std::setprecision(7) << *v;
-    else s << "none";
+    if (v)
+      s << std::setprecision(7) << *v;
+    else
+      s << "none";
     return s.str();
   };
   std::cout << "Well-posedness of the " << curve_name(curve.kind()) << " curve (C(I) of (3.9))\n"
@@ -86,8 +89,7 @@ void run_wellposed(const WellposedOptions& o) {
   for (auto [lo, hi] : w.intervals) std::cout << " [" << lo << ", " << hi << "]";
   if (w.intervals.empty()) std::cout << " none";
   std::cout << "\n  largest well-posed I         " << w.I_max_wellposed << "\n";
-  if (fig.I_max > 0.0)
-    std::cout << "  I_max of §4 (from Jop's I2N) " << fig.I_max << "\n";
+  if (fig.I_max > 0.0) std::cout << "  I_max of §4 (from Jop's I2N) " << fig.I_max << "\n";
   if (!o.output.out.empty()) std::cout << "  data written to " << o.output.out << "\n";
   if (!o.output.plot.empty()) std::cout << "  figure written to " << o.output.plot << "\n";
 }

@@ -1,25 +1,24 @@
 // What `granbench compare` reports (compare_report.hpp): each model's JSON and the table, with
 // n/a and the reason wherever there is no measurement (never a 0 that reads as a result).
-#include "compare_report.hpp"
+#include "analysis/cli/compare_report.hpp"
 
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 
-#include "cli_common.hpp"
-#include "measurement.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/spectral/measurement.hpp"
 
 namespace granbench::cli {
 
 nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
   nlohmann::json j = to_json(m);  // the measurement, spelled as in every command
-  j.update({
-      {"steps", r.steps},
-      {"wall_seconds", r.wall_seconds},
-      {"mass_error", r.mass_error},
-      {"flux", r.flux},
-      {"completed", r.outcome == RunOutcome::Completed},
-      {"run_command", r.run_command}});
+  j.update({{"steps", r.steps},
+            {"wall_seconds", r.wall_seconds},
+            {"mass_error", r.mass_error},
+            {"flux", r.flux},
+            {"completed", r.outcome == RunOutcome::Completed},
+            {"run_command", r.run_command}});
   if (!r.message.empty()) j["message"] = r.message;
   if (r.model == "twod") {
     j["I_range"] = {r.I_min, r.I_max};
@@ -91,15 +90,14 @@ void print_table(const Comparison& c) {
       std::cout << "; whole-run fit of ln|h_k| n/a (fewer than 3 samples)\n";
     if (!w.note.empty()) std::cout << "  " << name << ": " << w.note << "\n";
     if (m->saturated && m->wave)
-      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4) << m->wave->speed
-                << " m/s, amplitude " << m->final_amplitude * 1e3 << " mm\n";
+      std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4)
+                << m->wave->speed << " m/s, amplitude " << m->final_amplitude * 1e3 << " mm\n";
   }
   std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
             << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps
             << " steps), 2D mass error " << std::scientific << std::setprecision(1)
-            << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3)
-            << c.twod.I_min << ", " << c.twod.I_max << "], ill-posed fraction "
-            << c.twod.illposed_fraction << "\n";
+            << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3) << c.twod.I_min
+            << ", " << c.twod.I_max << "], ill-posed fraction " << c.twod.illposed_fraction << "\n";
 }
 
 }  // namespace granbench::cli

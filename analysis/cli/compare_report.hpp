@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compare.hpp"
+#include "analysis/comparison/compare.hpp"
 
 namespace granbench::cli {
 

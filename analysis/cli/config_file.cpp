@@ -1,5 +1,5 @@
 // Expansion of --config TOML files into command-line options; see config_file.hpp.
-#include "config_file.hpp"
+#include "analysis/cli/config_file.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -7,8 +7,8 @@
 #include <regex>
 #include <sstream>
 
-#include "cli_common.hpp"
-#include "toml_reader.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/toml_reader.hpp"
 
 namespace granbench::cli {
 

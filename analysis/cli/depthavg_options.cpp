@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "run_model.hpp"
+#include "analysis/cli/run_model.hpp"
 
 namespace granbench::cli {
 
@@ -15,7 +15,8 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->group(g)
       ->capture_default_str();
   app.add_option("--limiter", o.limiter,
-                 "slope reconstruction {central,minmod,mc,vanalbada}: central is unlimited (linear runs), vanalbada a smooth limiter")
+                 "slope reconstruction {central,minmod,mc,vanalbada}: central is unlimited (linear "
+                 "runs), vanalbada a smooth limiter")
       ->check(one_of({"central", "minmod", "mc", "vanalbada"}))
       ->group(g)
       ->capture_default_str();
@@ -43,7 +44,8 @@ double parse_chi(const std::string& text) {
   if (text == "bagnold") return 1.25;
   const double v = number_or_nan(text);
   if (!(v >= 1.0 && v <= 2.0))
-    throw UsageError("--chi: '" + text + "' is not allowed; valid values: bagnold or a number in [1, 2]");
+    throw UsageError("--chi: '" + text +
+                     "' is not allowed; valid values: bagnold or a number in [1, 2]");
   return v;
 }
 
@@ -51,7 +53,8 @@ double parse_frame_speed(const std::string& text, double linear_speed) {
   if (text == "linear") return linear_speed;
   const double v = number_or_nan(text);
   if (!(std::fabs(v) <= 100.0))
-    throw UsageError("--frame-speed: '" + text + "' is not allowed; valid values: linear or a "
+    throw UsageError("--frame-speed: '" + text +
+                     "' is not allowed; valid values: linear or a "
                      "number in [-100, 100] m/s");
   return v;
 }

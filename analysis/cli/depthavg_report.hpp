@@ -3,8 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "measurement.hpp"
-#include "run_model.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/spectral/measurement.hpp"
 
 namespace granbench::cli {
 

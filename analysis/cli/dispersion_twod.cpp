@@ -2,18 +2,18 @@
 // at each Lx, at N and at 3N/2 for the convergence check; (2) the short-wave ill-posedness probe;
 // (3) output: JSON, table, and with --out/--plot the three theories over k_hat (the 2D surface
 // branch, (7.11) with chi = 1 and with chi = 5/4) plus each surface eigenmode's profiles.
-#include "dispersion_twod.hpp"
+#include "analysis/cli/dispersion_twod.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 
-#include "dispersion.hpp"
-#include "hdf5_file.hpp"
-#include "linear2d_eigenmode.hpp"
-#include "linear2d_ill_posedness.hpp"
-#include "linear_stability_2d.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
+#include "analysis/linear2d/ill_posedness.hpp"
+#include "analysis/linear2d/linear_stability_2d.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/hdf5_file.hpp"
 
 namespace granbench::cli {
 
@@ -53,7 +53,7 @@ void write_theories(const std::string& path, const SteadyState& s,
                     const std::string& curve) {
   std::vector<double> k_hat;
   for (int i = 0; i < 60; ++i) k_hat.push_back(std::pow(10.0, -2.0 + 3.0 * i / 59.0));
-  const int N_curve = std::min(opt.N, 24);  // converged to ~1e-7 (tests/linear2d)
+  const int N_curve = std::min(opt.N, 24);  // converged to ~1e-7 (tests/analysis/linear2d)
   const auto branch = linear2d::surface_branch(results.front().base, k_hat, N_curve);
   const double rate = s.u_mean / s.h0;
   std::vector<double> Lx, g2, c2, go, co, g1, c1, g54, c54;

@@ -6,10 +6,10 @@
 #include <optional>
 #include <vector>
 
-#include "cli_common.hpp"
-#include "linear2d_light_layer.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/linear2d/light_layer.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench::cli {
 

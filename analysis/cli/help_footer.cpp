@@ -1,5 +1,5 @@
 // Examples and exit codes at the end of a subcommand's --help; see help_footer.hpp.
-#include "help_footer.hpp"
+#include "analysis/cli/help_footer.hpp"
 
 #include <map>
 

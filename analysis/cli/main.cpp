@@ -11,11 +11,11 @@
 #include <algorithm>
 #include <iostream>
 
-#include "cli_common.hpp"
-#include "commands.hpp"
-#include "config_file.hpp"
-#include "provenance.hpp"
-#include "suggest.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/config_file.hpp"
+#include "analysis/cli/suggest.hpp"
+#include "common/provenance.hpp"
 
 namespace {
 

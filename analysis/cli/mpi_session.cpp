@@ -1,6 +1,6 @@
 // MPI for the sweep's processes; see mpi_session.hpp. Collectives move plain arrays of doubles:
 // sizes first (MPI_Bcast, MPI_Gather), then the values (MPI_Bcast, MPI_Gatherv).
-#include "mpi_session.hpp"
+#include "analysis/cli/mpi_session.hpp"
 
 #include <cstdlib>
 #include <exception>

@@ -1,12 +1,12 @@
 // Up-front checks of output paths and record counts (output_checks.hpp).
-#include "output_checks.hpp"
+#include "analysis/cli/output_checks.hpp"
 
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
-#include "cli_common.hpp"
-#include "failure_policy.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "common/failure_policy.hpp"
 
 namespace granbench::cli {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "cli_common.hpp"
-#include "failure_policy.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "common/failure_policy.hpp"
 
 namespace granbench::cli {
 
@@ -28,24 +28,24 @@ struct RunOptions {
   FlowOptions flow;
   OutputOptions output;
   std::string model = "depthavg";
-  double Lx = 0.08;            // domain length [m]
-  std::size_t nx = 256;        // cells along x
-  double a0 = 2e-4;            // perturbation amplitude [m] (7.2)
-  int mode = 1;                // wavelengths of the perturbation in the domain
-  std::string init = "sine";   // sine (7.2) or eigenmode (7.10)
-  double noise = 0.0;          // random height noise, fraction of h0
+  double Lx = 0.08;           // domain length [m]
+  std::size_t nx = 256;       // cells along x
+  double a0 = 2e-4;           // perturbation amplitude [m] (7.2)
+  int mode = 1;               // wavelengths of the perturbation in the domain
+  std::string init = "sine";  // sine (7.2) or eigenmode (7.10)
+  double noise = 0.0;         // random height noise, fraction of h0
   std::uint64_t seed = 1;
-  double t_end = 10.0;         // [s]
-  double dt_out = 0.0;         // sampling interval [s]; 0: automatic
+  double t_end = 10.0;  // [s]
+  double dt_out = 0.0;  // sampling interval [s]; 0: automatic
   double rtol = 1e-6;
   double atol = 1e-10;
-  int bdf_order = 0;           // CVODE's BDF order limit; 0: 2 co-moving, 5 in the lab frame
+  int bdf_order = 0;  // CVODE's BDF order limit; 0: 2 co-moving, 5 in the lab frame
 };
 void add_run_options(CLI::App& app, RunOptions& o);
 
 // Depth-averaged model's own options.
 struct DepthAvgOptions {
-  std::string chi = "1";       // shape factor: 1, bagnold (5/4) or a number >= 1
+  std::string chi = "1";  // shape factor: 1, bagnold (5/4) or a number >= 1
   std::string limiter = "central";
   // Computational frame: 0 (lab), linear (the seeded mode's (7.11) phase speed), or a speed
   // [m/s]. Co-moving by default: a wave that travels at about that speed is nearly steady in it,

@@ -9,20 +9,21 @@
 // file), the run statistics and every parameter (/parameters). The time loop is twod::run
 // (twod/run.hpp), the files and checkpoints twod::RunOutput (twod/run_output.hpp); this file
 // checks the options and paths, measures and reports.
+#include "analysis/cli/run_twod.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 
-#include "checkpoint.hpp"
-#include "eigenmode_seed.hpp"
-#include "initial_state.hpp"
-#include "linear2d_eigenmode.hpp"
-#include "output.hpp"
-#include "output_checks.hpp"
-#include "run_output.hpp"
-#include "run_twod.hpp"
+#include "analysis/cli/output_checks.hpp"
+#include "analysis/comparison/eigenmode_seed.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
+#include "twod/checkpoint.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/output.hpp"
+#include "twod/run_output.hpp"
 
 namespace granbench::cli {
 
@@ -67,16 +68,17 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   RunSchedule schedule;
   schedule.t_end = o.t_end;
   // Automatic: no more than kMaxSamples, however long the run (an explicit --dt-out is refused).
-  schedule.dt_out = o.dt_out > 0.0 ? o.dt_out
-                                   : std::max(std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface)),
-                                              o.t_end / double(kMaxSamples));
+  schedule.dt_out = o.dt_out > 0.0
+                        ? o.dt_out
+                        : std::max(std::min(0.01, wavelength / (8.0 * 2.0 * base.u_surface)),
+                                   o.t_end / double(kMaxSamples));
   schedule.dt_snapshot = mo.dt_snapshot > 0.0 ? mo.dt_snapshot : o.t_end / 10.0;
   schedule.dt_checkpoint = mo.checkpoint_every;
   require_record_count("--dt-out", o.t_end, schedule.dt_out, kMaxSamples, "samples");
   require_record_count("--dt-snapshot", o.t_end, schedule.dt_snapshot, kMaxSnapshots, "snapshots");
   RunFiles files;
   files.out = o.output.out;
-  files.checkpoint = !mo.checkpoint.empty() ? mo.checkpoint
+  files.checkpoint = !mo.checkpoint.empty()  ? mo.checkpoint
                      : !o.output.out.empty() ? replace_extension(o.output.out, ".checkpoint.h5")
                                              : std::string("twod.checkpoint.h5");
   if (!files.out.empty()) {
@@ -133,7 +135,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   if (res.status == RunStatus::Interrupted && output->checkpoints_written() > 0)
     message += "; checkpoint " + files.checkpoint;
   // A completed run's last checkpoint is behind its end: of no use, and easily mistaken for one.
-  if (res.completed() && output->checkpoints_written() > 0) std::filesystem::remove(files.checkpoint);
+  if (res.completed() && output->checkpoints_written() > 0)
+    std::filesystem::remove(files.checkpoint);
 
   // --- results ---
   TwodRunReport report;

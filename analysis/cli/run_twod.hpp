@@ -9,32 +9,32 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "parameters.hpp"
-#include "run.hpp"
-#include "run_model.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
-#include "measurement.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/spectral/measurement.hpp"
+#include "common/steady_state.hpp"
+#include "twod/parameters.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 namespace granbench::cli {
 
 struct TwodOptions {
-  int nz = 64;                  // cells along z
-  double Lz = 0.0;              // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
-  double eta_max = 2.0;         // granular viscosity cap [Pa s]
-  double eta_min = 1e-3;        // granular viscosity floor [Pa s]
-  double D_min = 1e-6;          // floor on |D| [1/s]
+  int nz = 64;            // cells along z
+  double Lz = 0.0;        // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
+  double eta_max = 2.0;   // granular viscosity cap [Pa s]
+  double eta_min = 1e-3;  // granular viscosity floor [Pa s]
+  double D_min = 1e-6;    // floor on |D| [1/s]
   double rho_light = twod::Rheology{}.rho_light;  // light-fluid density [kg/m^3]
   double eta_light = twod::Rheology{}.eta_light;  // light-fluid viscosity [Pa s]
   std::string mixing = "arithmetic";
   double cfl = 0.4;
   int viscosity_passes = 1;
-  double dt_max = 1e-3;         // [s]
-  double tolerance = 1e-10;     // relative residual of the linear solves
-  double dt_snapshot = 0.0;     // interval of the 2D field snapshots [s]; 0: t_end/10
-  std::string checkpoint;       // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
+  double dt_max = 1e-3;      // [s]
+  double tolerance = 1e-10;  // relative residual of the linear solves
+  double dt_snapshot = 0.0;  // interval of the 2D field snapshots [s]; 0: t_end/10
+  std::string checkpoint;  // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
   double checkpoint_every = 1.0;  // simulated time between checkpoints [s]; 0: only at a stop
-  std::string restart;          // continue from this checkpoint
+  std::string restart;            // continue from this checkpoint
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
 
@@ -46,9 +46,9 @@ twod::SolverParams twod_solver_params(const RunOptions& run, const TwodOptions& 
 struct TwodRunReport {
   nlohmann::json json;  // the keys printed by --json
   twod::RunStatus status = twod::RunStatus::Completed;
-  std::string message;        // why it stopped early (with the checkpoint's path)
+  std::string message;   // why it stopped early (with the checkpoint's path)
   Measurement measured;  // the measurement behind json's growth keys
-  double Lz = 0.0;            // the domain height used [m]
+  double Lz = 0.0;       // the domain height used [m]
 };
 
 // Validates the options and paths (UsageError, before any work), runs the 2D model until t_end

@@ -1,5 +1,5 @@
 // The closest valid name to a mistyped one; see suggest.hpp.
-#include "suggest.hpp"
+#include "analysis/cli/suggest.hpp"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // The sweep's processes, its table, JSON, HDF5 file and figure; see sweep_models.hpp.
-#include "sweep_models.hpp"
+#include "analysis/cli/sweep_models.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,11 +9,11 @@
 #include <mutex>
 #include <optional>
 
-#include "commands.hpp"
-#include "mpi_session.hpp"
-#include "output_checks.hpp"
-#include "output_lock.hpp"
-#include "run_model.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/mpi_session.hpp"
+#include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "common/output_lock.hpp"
 
 namespace granbench::cli {
 
@@ -119,7 +119,8 @@ nlohmann::json point_json(const SweepPoint& p) {
       {"wall_seconds", p.wall_seconds},
       {"completed", p.completed},
       {"resumed", p.resumed},
-      {"run_command", p.run_command.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.run_command)},
+      {"run_command",
+       p.run_command.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.run_command)},
       {"status", p.completed         ? "completed"
                  : p.message.empty() ? "unfinished"
                                      : p.message}};

@@ -16,8 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli_common.hpp"
-#include "sweep.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/comparison/sweep.hpp"
 
 namespace granbench::cli {
 

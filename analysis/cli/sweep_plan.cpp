@@ -1,5 +1,5 @@
 // The sweep's options and the SweepSpec they make; see sweep_plan.hpp.
-#include "sweep_plan.hpp"
+#include "analysis/cli/sweep_plan.hpp"
 
 #include <algorithm>
 #include <sstream>

@@ -12,9 +12,9 @@
 #include <string>
 #include <thread>
 
-#include "cli_common.hpp"
-#include "run_model.hpp"
-#include "sweep.hpp"
+#include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/run_model.hpp"
+#include "analysis/comparison/sweep.hpp"
 
 namespace granbench::cli {
 

@@ -1,5 +1,5 @@
 // The strict TOML subset reader; see toml_reader.hpp.
-#include "toml_reader.hpp"
+#include "analysis/cli/toml_reader.hpp"
 
 #include <algorithm>
 #include <cctype>

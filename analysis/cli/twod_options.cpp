@@ -3,10 +3,10 @@
 #include <cmath>
 #include <string>
 
-#include "initial_state.hpp"
-#include "run.hpp"
-#include "run_twod.hpp"
-#include "steady_state.hpp"
+#include "analysis/cli/run_twod.hpp"
+#include "common/steady_state.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/run.hpp"
 
 namespace granbench::cli {
 
@@ -14,7 +14,8 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.nz, "twod: cells along z, in [4, 4096]")
       ->check(CLI::Range(4, 4096))
       ->capture_default_str();
-  app.add_option("--Lz", o.Lz, "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
+  app.add_option("--Lz", o.Lz,
+                 "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
       ->check(positive());
   app.add_option("--eta-max", o.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
       ->check(positive())
@@ -37,16 +38,18 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--cfl", o.cfl, "twod: Courant number per direction, in (0, 0.5)")
       ->check(open_range(0.0, 0.5))
       ->capture_default_str();
-  app.add_option("--viscosity-passes", o.viscosity_passes,
-                 "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
-                 "(1: one solve, second order in time through the stress tangent; more passes "
-                 "cost n times as much, docs/twod-validation.md)")
+  app.add_option(
+         "--viscosity-passes", o.viscosity_passes,
+         "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
+         "(1: one solve, second order in time through the stress tangent; more passes "
+         "cost n times as much, docs/twod-validation.md)")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
   app.add_option("--dt-max", o.dt_max, "twod: largest time step [s], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--tolerance", o.tolerance, "twod: relative residual of the linear solves, in (0, 1e-3)")
+  app.add_option("--tolerance", o.tolerance,
+                 "twod: relative residual of the linear solves, in (0, 1e-3)")
       ->check(open_range(0.0, 1e-3))
       ->capture_default_str();
   app.add_option("--dt-snapshot", o.dt_snapshot,

@@ -6,10 +6,10 @@
 #include <iostream>
 #include <optional>
 
-#include "commands.hpp"
-#include "diagnostics.hpp"
-#include "measurement.hpp"
-#include "run_twod.hpp"
+#include "analysis/cli/commands.hpp"
+#include "analysis/cli/run_twod.hpp"
+#include "analysis/spectral/measurement.hpp"
+#include "twod/diagnostics.hpp"
 
 namespace granbench::cli {
 
@@ -18,7 +18,8 @@ std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_lin
   if (!show) return {};
   const auto wall0 = std::chrono::steady_clock::now();
   return [wall0, t_end = o.t_end, last = 0.0](const twod::Solver& s, const SurfaceSeries&) mutable {
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     if (wall - last <= 1.0) return;
     last = wall;
     std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << s.state().t << " / " << t_end
@@ -37,27 +38,28 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
   double h_mean = 0.0;
   for (double v : last_h) h_mean += v / double(last_h.size());
   const double wall = res.wall_seconds;
-  nlohmann::json j = {{"model", "twod"},
-          {"t_reached", solver.state().t},
-          {"steps", st.steps},
-          {"viscous_iterations", st.viscous_iterations},
-          {"projection_iterations", st.projection_iterations},
-          {"wall_seconds", wall},
-          {"cell_updates_per_second", double(st.steps) * solver.grid().cells() / std::max(wall, 1e-9)},
-          {"mass_error", st.mass_error()},
-          {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
-          {"max_divergence", st.max_divergence},
-          {"dt_min", st.dt_min},
-          {"dt_max", st.dt_max},
-          {"h_mean", h_mean},
-          {"flux", twod::mean_flux(solver.grid(), solver.state())},
-          {"phase_speed_theory", number_or_null(seeded_speed)},
-          {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
-          {"illposed_fraction", res.last.illposed_fraction},
-          {"illposed_fraction_max", res.illposed_fraction_max},
-          {"dt_out", dt_out},
-          {"F", base.Fr},
-          {"u_mean", base.u_mean}};
+  nlohmann::json j = {
+      {"model", "twod"},
+      {"t_reached", solver.state().t},
+      {"steps", st.steps},
+      {"viscous_iterations", st.viscous_iterations},
+      {"projection_iterations", st.projection_iterations},
+      {"wall_seconds", wall},
+      {"cell_updates_per_second", double(st.steps) * solver.grid().cells() / std::max(wall, 1e-9)},
+      {"mass_error", st.mass_error()},
+      {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
+      {"max_divergence", st.max_divergence},
+      {"dt_min", st.dt_min},
+      {"dt_max", st.dt_max},
+      {"h_mean", h_mean},
+      {"flux", twod::mean_flux(solver.grid(), solver.state())},
+      {"phase_speed_theory", number_or_null(seeded_speed)},
+      {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
+      {"illposed_fraction", res.last.illposed_fraction},
+      {"illposed_fraction_max", res.illposed_fraction_max},
+      {"dt_out", dt_out},
+      {"F", base.Fr},
+      {"u_mean", base.u_mean}};
   j.update(to_json(measured));  // the measurement, spelled as in every command
   return j;
 }
@@ -69,7 +71,9 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
   if (o.output.json) {
     print_json(j);
   } else {
-    auto show = [&j](const char* key) { return j[key].is_null() ? std::string("-") : j[key].dump(); };
+    auto show = [&j](const char* key) {
+      return j[key].is_null() ? std::string("-") : j[key].dump();
+    };
     const SurfaceMeasurement& growth = r.measured.spectral;
     std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
               << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "

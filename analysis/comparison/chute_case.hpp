@@ -8,9 +8,9 @@
 #include <functional>
 #include <string>
 
-#include "material.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
+#include "common/material.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench {
 
@@ -22,10 +22,10 @@ struct ChuteCase {
   double angle_deg = 28.5;
   double h0 = 4e-3;
   double Lx = 0.08;
-  double a0 = 2e-5;        // amplitude of h [m]
+  double a0 = 2e-5;  // amplitude of h [m]
   Seed seed = Seed::Eigenmode;
-  double t_end = 4.0;      // [s]
-  double dt_out = 0.0;     // sampling interval [s]; 0: automatic (period/20, at most 0.02 s)
+  double t_end = 4.0;   // [s]
+  double dt_out = 0.0;  // sampling interval [s]; 0: automatic (period/20, at most 0.02 s)
 
   MuCurve make_curve() const { return MuCurve(curve, material, h0); }
   SteadyState steady() const {

@@ -1,7 +1,7 @@
 // The dual-model comparison: one chute flow run with both models, measured with the same
 // analysis code, beside three exact linear theories at the same wavenumber k_hat = 2 pi h0/Lx:
 //   exact          the paper's depth-averaged relation (7.11) (shape factor chi = 1);
-//   exact_bagnold  the same with the Bagnold shape factor chi = 5/4 (DESIGN.md §10);
+//   exact_bagnold  the same with the Bagnold shape factor chi = 5/4 (docs/design.md §10);
 //   exact_2d       the full 2D linear stability of the Bagnold flow (linear_stability_2d.hpp).
 // Each model is measured by the growth rate and phase speed of the seeded mode and of the other
 // waves at its wavenumber (matrix pencil fit of h_k(t), surface_measurement.hpp; the seeded one
@@ -12,9 +12,9 @@
 
 #include <optional>
 
-#include "chute_case.hpp"
-#include "model_runs.hpp"
-#include "measurement.hpp"
+#include "analysis/comparison/chute_case.hpp"
+#include "analysis/comparison/model_runs.hpp"
+#include "analysis/spectral/measurement.hpp"
 
 namespace granbench {
 

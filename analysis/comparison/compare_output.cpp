@@ -1,10 +1,10 @@
 // Writes compare.h5; see compare_output.hpp.
-#include "compare_output.hpp"
+#include "analysis/comparison/compare_output.hpp"
 
 #include <cmath>
 #include <vector>
 
-#include "hdf5_file.hpp"
+#include "common/hdf5_file.hpp"
 
 namespace granbench {
 
@@ -66,18 +66,34 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
   const ChuteCase& k = c.chute;
   const Material& m = k.material;
   out.attribute("/", "curve", std::string(curve_name(k.curve)));
-  for (auto [name, v] :
-       {std::pair{"angle_deg", k.angle_deg}, {"h0", k.h0}, {"Lx", k.Lx}, {"a0", k.a0},
-        {"t_end", k.t_end}, {"mu_s", m.mu_s}, {"mu_d", m.mu_d}, {"I0", m.I0}, {"d", m.d},
-        {"phi", m.phi}, {"rho_star", m.rho_star}, {"g", m.g}, {"mu_inf", m.mu_inf},
-        {"alpha", m.alpha}, {"twod_nx", double(twod.nx)}, {"twod_nz", double(twod.nz)},
-        {"twod_Lz", twod.domain_height(k.h0)}, {"twod_eta_max", twod.eta_max},
-        {"twod_rho_light", twod.rho_light}, {"twod_eta_light", twod.eta_light},
-        {"twod_viscosity_passes", double(twod.viscosity_passes)},
-        {"depthavg_nx", double(depthavg.nx)}, {"depthavg_chi", depthavg.chi},
-        {"depthavg_rtol", depthavg.rtol},
-        {"depthavg_co_moving", depthavg.co_moving ? 1.0 : 0.0}, {"I_zeta", c.base.I_zeta}, {"u_mean", c.base.u_mean},
-        {"Fr", c.base.Fr}})
+  for (auto [name, v] : {std::pair{"angle_deg", k.angle_deg},
+                         {"h0", k.h0},
+                         {"Lx", k.Lx},
+                         {"a0", k.a0},
+                         {"t_end", k.t_end},
+                         {"mu_s", m.mu_s},
+                         {"mu_d", m.mu_d},
+                         {"I0", m.I0},
+                         {"d", m.d},
+                         {"phi", m.phi},
+                         {"rho_star", m.rho_star},
+                         {"g", m.g},
+                         {"mu_inf", m.mu_inf},
+                         {"alpha", m.alpha},
+                         {"twod_nx", double(twod.nx)},
+                         {"twod_nz", double(twod.nz)},
+                         {"twod_Lz", twod.domain_height(k.h0)},
+                         {"twod_eta_max", twod.eta_max},
+                         {"twod_rho_light", twod.rho_light},
+                         {"twod_eta_light", twod.eta_light},
+                         {"twod_viscosity_passes", double(twod.viscosity_passes)},
+                         {"depthavg_nx", double(depthavg.nx)},
+                         {"depthavg_chi", depthavg.chi},
+                         {"depthavg_rtol", depthavg.rtol},
+                         {"depthavg_co_moving", depthavg.co_moving ? 1.0 : 0.0},
+                         {"I_zeta", c.base.I_zeta},
+                         {"u_mean", c.base.u_mean},
+                         {"Fr", c.base.Fr}})
     out.attribute("/", name, v);
   out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));
   out.close();

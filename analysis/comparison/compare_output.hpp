@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "compare.hpp"
+#include "analysis/comparison/compare.hpp"
 
 namespace granbench {
 

@@ -1,5 +1,5 @@
 // The eigenmode initial condition of the 2D solver; see eigenmode_seed.hpp.
-#include "eigenmode_seed.hpp"
+#include "analysis/comparison/eigenmode_seed.hpp"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // Seeding the 2D solver with the exact linear eigenmode: the twod initial
 // condition (surface h(x) and downslope velocity u(x, z); the solver derives w from continuity
 // and p hydrostatically, twod/initial_state.hpp) built from linear2d::Eigenmode
-// (analysis/linear2d_eigenmode.hpp):
+// (analysis/linear2d/eigenmode.hpp):
 //
 //   h(x) = h0 + a cos(k x),   u(x, z) = U0(z) + Re(a u_hat(z) e^{ikx})   for z <= h(x),
 //
@@ -9,8 +9,8 @@
 // joins the twod and analysis libraries, which do not depend on each other.
 #pragma once
 
-#include "initial_state.hpp"
-#include "linear2d_eigenmode.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
+#include "twod/initial_state.hpp"
 
 namespace granbench {
 

@@ -7,7 +7,7 @@
 //             surface h0 + a0 cos(kx) and u = U0(z) + Re(a0 u_hat(z) e^{ikx}); the 2D solver
 //             derives w from continuity and p from hydrostatics (initial_state.hpp).
 // With Seed::Sine both start from (7.2) with the Bagnold velocity of the local depth, as §7 does.
-#include "model_runs.hpp"
+#include "analysis/comparison/model_runs.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -17,13 +17,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "analysis/comparison/eigenmode_seed.hpp"
+#include "analysis/comparison/run_command.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
+#include "analysis/linear2d/linear_stability_2d.hpp"
+#include "analysis/theory/dispersion.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
-#include "dispersion.hpp"
-#include "eigenmode_seed.hpp"
-#include "linear2d_eigenmode.hpp"
-#include "linear_stability_2d.hpp"
-#include "run_command.hpp"
 #include "twod/diagnostics.hpp"
 #include "twod/initial_state.hpp"
 #include "twod/run.hpp"
@@ -49,7 +49,8 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   space.Lx = c.Lx;
   space.nx = s.nx;
   space.chi = s.chi;
-  space.reconstruction = s.limiter ? depthavg::Reconstruction::MC : depthavg::Reconstruction::Central;
+  space.reconstruction =
+      s.limiter ? depthavg::Reconstruction::MC : depthavg::Reconstruction::Central;
   space.frame_speed = s.co_moving ? exact.phase_speed : 0.0;
   depthavg::IntegratorParams integ;
   integ.rtol = s.rtol;
@@ -64,7 +65,8 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   const depthavg::Solver solver(base, curve, space, integ);
   const auto U0 = depthavg::initial_state(solver.rhs(), init, exact.lambda_hat);
   depthavg::RunCallbacks callbacks;
-  if (ctl.progress) callbacks.progress = [&](double t, double te) { ctl.progress("depthavg", t, te); };
+  if (ctl.progress)
+    callbacks.progress = [&](double t, double te) { ctl.progress("depthavg", t, te); };
   callbacks.stop = ctl.stop;
   depthavg::RunResult r = solver.run(U0, out, callbacks);
 
@@ -128,13 +130,13 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
 
   ModelRun m;
   m.model = "twod";
-  twod::InitialCondition ic = c.seed == Seed::Eigenmode
-                                  ? eigenmode_condition(base, curve, c, s.chebyshev_N,
-                                                        m.seeded_growth_rate)
-                                  : twod::perturbed_bagnold(base, c.a0, c.Lx);
+  twod::InitialCondition ic =
+      c.seed == Seed::Eigenmode
+          ? eigenmode_condition(base, curve, c, s.chebyshev_N, m.seeded_growth_rate)
+          : twod::perturbed_bagnold(base, c.a0, c.Lx);
   twod::Solver solver(grid, params, twod::make_initial_state(grid, ic, params));
 
-  // The 2D linear speed is close to the chi = 5/4 depth-averaged one (DESIGN.md §10).
+  // The 2D linear speed is close to the chi = 5/4 depth-averaged one (docs/design.md §10).
   twod::RunSchedule schedule;
   schedule.t_end = c.t_end;
   schedule.dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);

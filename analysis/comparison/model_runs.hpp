@@ -10,11 +10,11 @@
 #include <tuple>
 #include <utility>
 
-#include "chute_case.hpp"
-#include "grid.hpp"
-#include "parameters.hpp"
-#include "run_status.hpp"
-#include "surface_series.hpp"
+#include "analysis/comparison/chute_case.hpp"
+#include "common/run_status.hpp"
+#include "common/surface_series.hpp"
+#include "twod/grid.hpp"
+#include "twod/parameters.hpp"
 
 namespace granbench {
 
@@ -33,7 +33,7 @@ struct ModelRun {
   double illposed_fraction = 0.0;   // 2D only
   double seeded_growth_rate = 0.0;  // the theory's growth rate of the seeded mode, if seeded
   double dt_out = 0.0;              // sampling interval of the series [s]
-  std::string run_command;          // `granbench run ...` that reproduces this run (run_command.hpp)
+  std::string run_command;  // `granbench run ...` that reproduces this run (run_command.hpp)
 };
 
 struct DepthAvgSettings {
@@ -49,7 +49,7 @@ struct DepthAvgSettings {
 struct TwodSettings {
   int nx = 160, nz = 32;
   double Lz_over_h0 = 0.0;  // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
-  double eta_max = 2.0;     // granular viscosity cap [Pa s] (DESIGN.md §8)
+  double eta_max = 2.0;     // granular viscosity cap [Pa s] (docs/design.md §8)
   double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
   int chebyshev_N = 32;      // resolution of the eigenmode used for seeding
   int viscosity_passes = 1;  // Picard passes for eta per step (twod/parameters.hpp)

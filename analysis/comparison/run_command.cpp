@@ -1,5 +1,5 @@
 // `granbench run` command lines of a comparison's model runs; see run_command.hpp.
-#include "run_command.hpp"
+#include "analysis/comparison/run_command.hpp"
 
 #include <charconv>
 #include <utility>
@@ -32,7 +32,8 @@ std::string chute_options(const ChuteCase& c, double dt_out) {
       {"--alpha", &Material::alpha}, {"--kk-mu0", &Material::kk_mu0},
       {"--kk-cK", &Material::kk_cK}, {"--hm-c", &Material::hm_c}};
   for (const auto& [option, member] : constants)
-    if (c.material.*member != table1.*member) s += std::string(" ") + option + " " + exact(c.material.*member);
+    if (c.material.*member != table1.*member)
+      s += std::string(" ") + option + " " + exact(c.material.*member);
   return s;
 }
 
@@ -51,10 +52,9 @@ std::string depthavg_run_command(const ChuteCase& c, const DepthAvgSettings& s, 
 std::string twod_run_command(const ChuteCase& c, const TwodSettings& s, double dt_out) {
   // `run` seeds the eigenmode at the default chebyshev_N, the only value compare and sweep use.
   return "granbench run --model twod" + chute_options(c, dt_out) + " --nx " + std::to_string(s.nx) +
-         " --nz " + std::to_string(s.nz) + " --Lz " + exact(s.domain_height(c.h0)) +
-         " --eta-max " + exact(s.eta_max) + " --rho-light " + exact(s.rho_light) +
-         " --eta-light " + exact(s.eta_light) + " --viscosity-passes " +
-         std::to_string(s.viscosity_passes);
+         " --nz " + std::to_string(s.nz) + " --Lz " + exact(s.domain_height(c.h0)) + " --eta-max " +
+         exact(s.eta_max) + " --rho-light " + exact(s.rho_light) + " --eta-light " +
+         exact(s.eta_light) + " --viscosity-passes " + std::to_string(s.viscosity_passes);
 }
 
 }  // namespace granbench

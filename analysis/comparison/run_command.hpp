@@ -1,14 +1,14 @@
 // The `granbench run` command line that reproduces one model's run of a comparison or of a sweep
 // point: every option the run depends on (material constants only where they differ from table 1),
 // numbers in their shortest exact decimal form, so that the rerun takes the same steps and reports
-// the same growth rate and phase speed (tests/comparison/test_run_command.cpp checks it to 1e-9).
+// the same growth rate and phase speed (tests/analysis/cli/test_run_command.cpp checks it to 1e-9).
 // The thread count is left out: results do not depend on it.
 #pragma once
 
 #include <string>
 
-#include "chute_case.hpp"
-#include "model_runs.hpp"
+#include "analysis/comparison/chute_case.hpp"
+#include "analysis/comparison/model_runs.hpp"
 
 namespace granbench {
 

@@ -1,5 +1,5 @@
 // Parallel, resumable dispersion sweeps; see sweep.hpp.
-#include "sweep.hpp"
+#include "analysis/comparison/sweep.hpp"
 
 #include <algorithm>
 #include <cmath>

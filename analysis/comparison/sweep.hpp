@@ -1,7 +1,8 @@
 // Dispersion sweeps over domain length (figure 13): for each Lx and each chosen model, one
 // seeded run measured with the same analysis (compare.hpp), beside the exact theories at that
 // k_hat. The depth-averaged-only sweep may instead measure each point with the clean linear run
-// (depthavg/linear_run.hpp: normal mode (7.10), tight tolerances) against (7.11).
+// (analysis/comparison/depthavg_linear_run.hpp: normal mode (7.10), tight tolerances) against
+// (7.11).
 //
 // Points run in parallel on local cores, and may be shared among processes (MPI ranks): point i
 // of the list (depthavg points first, then twod) runs on the process with i % ranks == rank.
@@ -20,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "compare.hpp"
-#include "depthavg/linear_run.hpp"
+#include "analysis/comparison/compare.hpp"
+#include "analysis/comparison/depthavg_linear_run.hpp"
 
 namespace granbench {
 
@@ -100,7 +101,7 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
 std::vector<SweepPoint> read_sweep(const std::string& path);
 // The settings that decide a point's value, by name, stored with the points and compared on
 // resume: every option of `granbench sweep` that changes a result lands in one of them
-// (tests/cli/test_sweep_settings.cpp checks that by enumerating the options).
+// (tests/analysis/cli/test_sweep_settings.cpp checks that by enumerating the options).
 std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& spec);
 // Throws std::invalid_argument naming the first setting in which the sweep stored at `path`
 // differs from `spec` (sweep_store.cpp).

@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <sstream>
 
-#include "dispersion_curve.hpp"
-#include "hdf5_file.hpp"
-#include "sweep.hpp"
+#include "analysis/comparison/sweep.hpp"
+#include "analysis/theory/dispersion_curve.hpp"
+#include "common/hdf5_file.hpp"
 
 namespace granbench {
 

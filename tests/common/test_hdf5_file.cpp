@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "hdf5_file.hpp"
+#include "common/hdf5_file.hpp"
 
 using namespace granbench;
 

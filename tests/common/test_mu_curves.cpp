@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mu_curves.hpp"
+#include "common/mu_curves.hpp"
 
 using namespace granbench;
 
@@ -60,11 +60,11 @@ TEST(MuCurves, JopInverseMatchesClosedForm) {
 
 TEST(MuCurves, InverseOutsideRangeIsAClearError) {
   const MuCurve jop(CurveKind::Jop, Material{});
-  EXPECT_THROW(jop.inverse(0.3), CurveRangeError);   // below mu_s
-  EXPECT_THROW(jop.inverse(0.6), CurveRangeError);   // above mu_d
+  EXPECT_THROW(jop.inverse(0.3), CurveRangeError);  // below mu_s
+  EXPECT_THROW(jop.inverse(0.6), CurveRangeError);  // above mu_d
   const MuCurve reg(CurveKind::Regularised, Material{});
   EXPECT_THROW(reg.inverse(-0.1), CurveRangeError);
-  EXPECT_NO_THROW(reg.inverse(0.9));                 // the I^2 term makes mu unbounded
+  EXPECT_NO_THROW(reg.inverse(0.9));  // the I^2 term makes mu unbounded
 }
 
 TEST(MuCurves, RegularisedCurveIsContinuousAtJunctionAndVanishesAtZero) {

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
 
 using namespace granbench;
 
@@ -38,8 +38,8 @@ TEST(SteadyState, DepthAverageOfBagnoldProfileIsUMean) {
   EXPECT_NEAR(s.u_surface / s.u_mean, 5.0 / 3.0, 1e-14);
   EXPECT_NEAR(s.Fr, 2.0 * s.h0 / (5.0 * s.material.d) * s.I_zeta * std::sqrt(s.material.phi),
               1e-12);  // (7.1)
-  EXPECT_NEAR(s.pressure(0.0), s.material.bulk_density() * s.material.g * s.h0 *
-                                   std::cos(s.zeta), 1e-9);
+  EXPECT_NEAR(s.pressure(0.0), s.material.bulk_density() * s.material.g * s.h0 * std::cos(s.zeta),
+              1e-9);
 }
 
 TEST(SteadyState, GeneralisedCoefficientsEqualThePapersForJop) {
@@ -51,8 +51,8 @@ TEST(SteadyState, GeneralisedCoefficientsEqualThePapersForJop) {
   const double nu_75 = 5.0 * m.d / (9.0 * m.I0) * std::sqrt(m.g) * std::sin(zeta) /
                        std::sqrt(m.phi * std::cos(zeta)) * (m.mu_d - tz) / (tz - m.mu_s);  // (7.5)
   EXPECT_NEAR(s.nu / nu_75, 1.0, 1e-12);
-  const double gamma = 2.0 * std::sqrt(m.phi) * m.I0 * s.h0 / (5.0 * s.Fr * m.d);      // (7.9b)
-  const double Gamma = gamma * (m.mu_d - m.mu_s) / ((1.0 + gamma) * (1.0 + gamma));   // (7.9a)
+  const double gamma = 2.0 * std::sqrt(m.phi) * m.I0 * s.h0 / (5.0 * s.Fr * m.d);    // (7.9b)
+  const double Gamma = gamma * (m.mu_d - m.mu_s) / ((1.0 + gamma) * (1.0 + gamma));  // (7.9a)
   EXPECT_NEAR(s.gamma / gamma, 1.0, 1e-12);
   EXPECT_NEAR(s.Gamma / Gamma, 1.0, 1e-12);
   EXPECT_NEAR(s.R, s.u_mean * std::sqrt(s.h0) / nu_75, 1e-9 * s.R);  // (7.6)
@@ -62,8 +62,8 @@ TEST(SteadyState, NoSteadyFlowOutsideTheCurvesRange) {
   const MuCurve jop(CurveKind::Jop, Material{});
   EXPECT_THROW(steady_state(jop, degrees_to_radians(15.0), 4e-3), CurveRangeError);
   EXPECT_THROW(steady_state(jop, degrees_to_radians(30.0), 4e-3), CurveRangeError);
-  EXPECT_NO_THROW(steady_state(MuCurve(CurveKind::Regularised, Material{}),
-                               degrees_to_radians(30.0), 4e-3));
+  EXPECT_NO_THROW(
+      steady_state(MuCurve(CurveKind::Regularised, Material{}), degrees_to_radians(30.0), 4e-3));
 }
 
 TEST(SteadyState, WellPosednessFlagFollowsC) {

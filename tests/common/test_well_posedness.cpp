@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "ill_posedness.hpp"
-#include "neutral_points.hpp"
+#include "common/ill_posedness.hpp"
+#include "common/neutral_points.hpp"
 
 using namespace granbench;
 
@@ -27,8 +27,10 @@ TEST(WellPosedness, CVanishesAtNeutralPointsAndHasTheRightSignAround) {
       for (auto [lo, hi] : w.intervals) inside |= (I > lo && I < hi);
       for (double r : w.neutral) near_root |= std::abs(I / r - 1.0) < 1e-6;
       if (near_root) continue;
-      if (inside) EXPECT_LE(ill_posedness_C(c, I), 0.0) << curve_name(kind) << " I = " << I;
-      else EXPECT_GT(ill_posedness_C(c, I), 0.0) << curve_name(kind) << " I = " << I;
+      if (inside)
+        EXPECT_LE(ill_posedness_C(c, I), 0.0) << curve_name(kind) << " I = " << I;
+      else
+        EXPECT_GT(ill_posedness_C(c, I), 0.0) << curve_name(kind) << " I = " << I;
     }
   }
 }
@@ -65,7 +67,8 @@ TEST(WellPosedness, NeutralCurvesSolveTheOde42AndHaveCZero) {
       // d ln I/dmu by central differences (I spans ~80 decades, ln I does not), compared with
       // (4.2) written as d ln I/dmu = 1/(I dmu/dI).
       const double h = 1e-6;
-      const double dlnI = (std::log(curve.I_of_mu(mu + h)) - std::log(curve.I_of_mu(mu - h))) / (2.0 * h);
+      const double dlnI =
+          (std::log(curve.I_of_mu(mu + h)) - std::log(curve.I_of_mu(mu - h))) / (2.0 * h);
       const double slope = neutral_slope(mu, I, sign);
       EXPECT_NEAR(dlnI * I * slope, 1.0, 1e-7) << "sign " << sign << " mu " << mu;
       EXPECT_NEAR(ill_posedness_C(mu, I * slope), 0.0, 1e-12);  // (4.2) is C = 0

@@ -2,6 +2,8 @@
 // rejected with exit code 2 and one line naming the option, without writing output; a short run
 // and sweep produce the documented JSON keys.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -9,8 +11,6 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
@@ -48,9 +48,9 @@ std::string last_stderr() {
 }
 
 TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
-  const std::string out = (std::filesystem::temp_directory_path() /
-                           ("gb_cli_bad_" + std::to_string(getpid()) + ".h5"))
-                              .string();
+  const std::string out =
+      (std::filesystem::temp_directory_path() / ("gb_cli_bad_" + std::to_string(getpid()) + ".h5"))
+          .string();
   std::filesystem::remove(out);
   const std::pair<std::string, std::string> cases[] = {
       {"run --model depthavg --nx 2", "--nx"},
@@ -78,13 +78,14 @@ TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
 }
 
 TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
-  const std::string out = (std::filesystem::temp_directory_path() /
-                           ("gb_cli_run_" + std::to_string(getpid()) + ".h5"))
-                              .string();
+  const std::string out =
+      (std::filesystem::temp_directory_path() / ("gb_cli_run_" + std::to_string(getpid()) + ".h5"))
+          .string();
   std::filesystem::remove(out);
   const auto r = granbench(
       "run --model depthavg --init eigenmode --a0 4e-6 --Lx 0.08 --nx 64 --t-end 0.3 "
-      "--rtol 1e-8 --atol 1e-14 --json --out " + out);
+      "--rtol 1e-8 --atol 1e-14 --json --out " +
+      out);
   ASSERT_EQ(r.code, 0) << last_stderr();
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"steps", "wall_seconds", "mass_error", "h_mean", "flux", "growth_rate",
@@ -103,8 +104,8 @@ TEST(DepthAvgCli, SweepReportsPointsBesideTheExactRelation) {
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["points"].size(), 2u);
   for (const auto& p : j["points"]) {
-    for (const char* key : {"Lx", "growth_rate", "growth_rate_exact", "phase_speed",
-                            "phase_speed_exact"})
+    for (const char* key :
+         {"Lx", "growth_rate", "growth_rate_exact", "phase_speed", "phase_speed_exact"})
       EXPECT_TRUE(p.contains(key)) << key;
     EXPECT_NEAR(p["growth_rate"].get<double>(), p["growth_rate_exact"].get<double>(),
                 0.01 * p["growth_rate_exact"].get<double>());

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "../support/verification_table.hpp"
-#include "depthavg/linear_run.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
+#include "analysis/comparison/depthavg_linear_run.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
+#include "tests/support/verification_table.hpp"
 
 namespace granbench {
 namespace {

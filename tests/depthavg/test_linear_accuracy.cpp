@@ -5,10 +5,10 @@
 // chi-generalised relation.
 #include <gtest/gtest.h>
 
-#include "depthavg/linear_run.hpp"
-#include "dispersion.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
+#include "analysis/comparison/depthavg_linear_run.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 
 namespace granbench {
 namespace {
@@ -37,9 +37,11 @@ TEST(DepthAvgLinear, GrowthAndSpeedMatchExactAcrossUnstableBandAndBeyondCutoff) 
     EXPECT_TRUE(r.measured.found()) << r.measured.reason;
     EXPECT_EQ(r.exact.growth_rate > 0.0, Lx > Lc);
     EXPECT_LT(r.growth_relative_error(), 5e-3)
-        << "Lx " << Lx << ": measured " << r.measured.growth_rate << ", exact " << r.exact.growth_rate;
+        << "Lx " << Lx << ": measured " << r.measured.growth_rate << ", exact "
+        << r.exact.growth_rate;
     EXPECT_LT(r.speed_relative_error(), 5e-3)
-        << "Lx " << Lx << ": measured " << r.measured.phase_speed << ", exact " << r.exact.phase_speed;
+        << "Lx " << Lx << ": measured " << r.measured.phase_speed << ", exact "
+        << r.exact.phase_speed;
   }
 }
 

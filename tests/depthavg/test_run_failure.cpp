@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
 
 namespace granbench {
 

@@ -3,8 +3,8 @@
 // the uniform steady state (h0, u_bar_0) stays steady; the unlimited and limited reconstructions
 // approach each other on a rollwave as the grid is refined, and so do the lab-frame and
 // co-moving-frame solutions (in the linear regime at the scheme's second order: the co-moving
-// output is the lab-frame solution, up to the discretisation error); the stop flag keeps what was computed; a diverging run stops
-// and says when, where and in which quantity.
+// output is the lab-frame solution, up to the discretisation error); the stop flag keeps what was
+// computed; a diverging run stops and says when, where and in which quantity.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,12 +13,12 @@
 #include <cstdio>
 #include <limits>
 
+#include "analysis/spectral/wave_speed.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/mu_curves.hpp"
+#include "common/steady_state.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
-#include "dispersion.hpp"
-#include "mu_curves.hpp"
-#include "steady_state.hpp"
-#include "wave_speed.hpp"
 
 namespace granbench {
 namespace {
@@ -95,7 +95,7 @@ TEST(DepthAvgSolver, CentralAndLimitedReconstructionsConvergeTogetherOnARollwave
       amp = std::max(amp, std::fabs(ha[j] - f.base.h0));
     }
   }
-  EXPECT_GT(amp, 4e-4);              // the wave has grown well beyond a0 = 0.2 mm
+  EXPECT_GT(amp, 4e-4);               // the wave has grown well beyond a0 = 0.2 mm
   EXPECT_LT(diff[1], 0.9 * diff[0]);  // closer on the finer grid
   EXPECT_LT(diff[1], 0.35 * amp);
 }
@@ -171,7 +171,7 @@ TEST(DepthAvgSolver, CoMovingOutputConvergesToTheLabFrameOutputAtSecondOrder) {
     }
     std::printf("nx = %zu: lab vs co-moving, largest relative difference %.3e\n", nx[i], diff[i]);
   }
-  EXPECT_LT(diff[2], 3e-3);  // measured 1.96e-3
+  EXPECT_LT(diff[2], 3e-3);                      // measured 1.96e-3
   EXPECT_GT(std::log2(diff[0] / diff[1]), 1.7);  // second order
   EXPECT_GT(std::log2(diff[1] / diff[2]), 1.7);
 }

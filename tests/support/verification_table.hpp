@@ -75,6 +75,8 @@ inline std::string fixed(double v, int digits = 2) {
   std::snprintf(b, sizeof b, "%.*f", digits, v);
   return b;
 }
-inline std::string dash() { return "–"; }
+inline std::string dash() {
+  return "–";
+}
 
 }  // namespace granbench::testing

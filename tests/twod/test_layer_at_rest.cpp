@@ -7,9 +7,9 @@
 
 #include <cstdio>
 
-#include "diagnostics.hpp"
-#include "initial_state.hpp"
-#include "solver.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench::twod;
 
@@ -34,6 +34,10 @@ double spurious_speed_after(double h0, int steps) {
 }
 }  // namespace
 
-TEST(LayerAtRest, SurfaceOnCellFace) { EXPECT_LT(spurious_speed_after(0.004, 300), 1e-10); }
+TEST(LayerAtRest, SurfaceOnCellFace) {
+  EXPECT_LT(spurious_speed_after(0.004, 300), 1e-10);
+}
 
-TEST(LayerAtRest, SurfaceInsideCells) { EXPECT_LT(spurious_speed_after(0.00337, 300), 1e-10); }
+TEST(LayerAtRest, SurfaceInsideCells) {
+  EXPECT_LT(spurious_speed_after(0.00337, 300), 1e-10);
+}

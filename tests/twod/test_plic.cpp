@@ -4,15 +4,15 @@
 
 #include <cmath>
 
-#include "plic.hpp"
+#include "twod/plic.hpp"
 
 using namespace granbench::twod;
 
 TEST(Plic, KnownAreas) {
-  EXPECT_DOUBLE_EQ(plic_area(0.0, 1.0, 0.3), 0.3);           // horizontal line z = 0.3
-  EXPECT_DOUBLE_EQ(plic_area(1.0, 1.0, 1.0), 0.5);           // diagonal
-  EXPECT_DOUBLE_EQ(plic_area(1.0, 1.0, 0.5), 0.125);         // corner triangle
-  EXPECT_DOUBLE_EQ(plic_area(-1.0, 0.0, -0.25), 0.75);       // fluid on x >= 0.25
+  EXPECT_DOUBLE_EQ(plic_area(0.0, 1.0, 0.3), 0.3);      // horizontal line z = 0.3
+  EXPECT_DOUBLE_EQ(plic_area(1.0, 1.0, 1.0), 0.5);      // diagonal
+  EXPECT_DOUBLE_EQ(plic_area(1.0, 1.0, 0.5), 0.125);    // corner triangle
+  EXPECT_DOUBLE_EQ(plic_area(-1.0, 0.0, -0.25), 0.75);  // fluid on x >= 0.25
   EXPECT_DOUBLE_EQ(plic_area(2.0, 1.0, 3.0), 1.0);
   EXPECT_DOUBLE_EQ(plic_area(2.0, 1.0, -0.1), 0.0);
 }

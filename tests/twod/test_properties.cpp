@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "properties.hpp"
+#include "twod/properties.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;

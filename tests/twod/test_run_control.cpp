@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint.hpp"
-#include "initial_state.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/checkpoint.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint.hpp"
-#include "initial_state.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/checkpoint.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
@@ -32,7 +32,9 @@ struct Case {
     ic = perturbed_bagnold(steady_state(curve, params.zeta, 0.004), 2e-4, grid.Lx);
   }
   Solver solver() const { return Solver(grid, params, make_initial_state(grid, ic, params)); }
-  SurfaceSeries empty_series() const { return SurfaceSeries::uniform_grid(grid.Lx, grid.nx, 0.004); }
+  SurfaceSeries empty_series() const {
+    return SurfaceSeries::uniform_grid(grid.Lx, grid.nx, 0.004);
+  }
 };
 
 RunSchedule schedule(double t_end, double dt_out, double dt_snapshot, double dt_checkpoint) {

@@ -16,14 +16,14 @@
 #include <complex>
 #include <cstdio>
 
-#include "diagnostics.hpp"
-#include "dispersion.hpp"
-#include "initial_state.hpp"
-#include "linear_stability_2d.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "spectral_growth.hpp"
-#include "steady_state.hpp"
+#include "analysis/linear2d/linear_stability_2d.hpp"
+#include "analysis/spectral/spectral_growth.hpp"
+#include "analysis/theory/dispersion.hpp"
+#include "common/steady_state.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;

@@ -16,10 +16,10 @@
 
 #include <cmath>
 
-#include "../support/verification_table.hpp"
-#include "initial_state.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "tests/support/verification_table.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
@@ -57,8 +57,8 @@ void expect_order(const std::vector<int>& nz, const std::vector<Errors>& e, doub
               ", of the L1 error > " + vt::fixed(min_order_l1, 1) + " between successive grids");
   for (std::size_t n = 0; n < e.size(); ++n) {
     if (n == 0) {
-      table.row({std::to_string(nz[n]), vt::sci(e[n].max), vt::dash(), vt::sci(e[n].l1),
-                 vt::dash()});
+      table.row(
+          {std::to_string(nz[n]), vt::sci(e[n].max), vt::dash(), vt::sci(e[n].l1), vt::dash()});
       continue;
     }
     const double p_max = std::log2(e[n - 1].max / e[n].max);
@@ -107,7 +107,8 @@ TEST(SteadyProfiles, BagnoldLayerRegularised) {
   const MuCurve curve(CurveKind::Regularised, params.rheology.material, h);
   const SteadyState steady = steady_state(curve, params.zeta, h);
   ASSERT_TRUE(steady.well_posed);
-  const double delta = params.rheology.rho_light * (Lz - h) / params.rheology.material.bulk_density();
+  const double delta =
+      params.rheology.rho_light * (Lz - h) / params.rheology.material.bulk_density();
   auto exact = [=](double z) { return steady.velocity_at_depth(z, h + delta); };  // (5.5)
   const std::vector<int> nz{16, 32, 64};
   std::vector<Errors> e;

@@ -10,8 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "grid.hpp"
-#include "surface_row_pressure.hpp"
+#include "twod/grid.hpp"
+#include "twod/surface_row_pressure.hpp"
 
 using namespace granbench::twod;
 

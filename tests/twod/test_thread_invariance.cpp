@@ -14,11 +14,11 @@
 #include <cstring>
 #include <vector>
 
-#include "initial_state.hpp"
-#include "parallel.hpp"
-#include "run.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/parallel.hpp"
+#include "twod/run.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
@@ -58,7 +58,9 @@ void expect_identical(int nx, int nz) {
   const Outcome two = run_with_threads(nx, nz, 2);
   ASSERT_EQ(one.result.status, RunStatus::Completed) << one.result.message;
   ASSERT_EQ(two.result.status, RunStatus::Completed) << two.result.message;
-  EXPECT_GT(one.stats.steps, 20) << "steps " << one.stats.steps << " viscous it " << one.stats.viscous_iterations << " pressure it " << one.stats.projection_iterations;
+  EXPECT_GT(one.stats.steps, 20) << "steps " << one.stats.steps << " viscous it "
+                                 << one.stats.viscous_iterations << " pressure it "
+                                 << one.stats.projection_iterations;
   EXPECT_EQ(one.stats.steps, two.stats.steps);
   EXPECT_EQ(one.stats.viscous_iterations, two.stats.viscous_iterations);
   EXPECT_EQ(one.stats.projection_iterations, two.stats.projection_iterations);
@@ -79,6 +81,10 @@ void expect_identical(int nx, int nz) {
 
 }  // namespace
 
-TEST(ThreadInvariance, EvenGridOneAndTwoThreadsBitwiseIdentical) { expect_identical(128, 32); }
+TEST(ThreadInvariance, EvenGridOneAndTwoThreadsBitwiseIdentical) {
+  expect_identical(128, 32);
+}
 
-TEST(ThreadInvariance, OddGridOneAndTwoThreadsBitwiseIdentical) { expect_identical(65, 32); }
+TEST(ThreadInvariance, OddGridOneAndTwoThreadsBitwiseIdentical) {
+  expect_identical(65, 32);
+}

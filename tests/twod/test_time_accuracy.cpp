@@ -14,12 +14,12 @@
 
 #include <cmath>
 
-#include "../support/verification_table.hpp"
-#include "diagnostics.hpp"
-#include "initial_state.hpp"
-#include "solver.hpp"
-#include "spectral_growth.hpp"
-#include "steady_state.hpp"
+#include "analysis/spectral/spectral_growth.hpp"
+#include "common/steady_state.hpp"
+#include "tests/support/verification_table.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;

@@ -10,9 +10,9 @@
 #include <limits>
 #include <vector>
 
-#include "initial_state.hpp"
-#include "solver.hpp"
-#include "steady_state.hpp"
+#include "common/steady_state.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/solver.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;

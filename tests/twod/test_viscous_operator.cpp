@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "viscous_operator.hpp"
+#include "twod/viscous_operator.hpp"
 
 using namespace granbench::twod;
 
@@ -87,8 +87,8 @@ TEST(ViscousOperator, RigidTranslationFeelsOnlyTheMassAwayFromTheBed) {
     }
     // The bed: the shear stress of the slip against the wall, 2 eta V / dz^2 (gamma = 2u/dz on
     // half a volume).
-    const double bed = props.rho_u[g.at(i, 0)] * V / dt +
-                       2.0 * props.eta_n[g.at(i, 0)] * V / (g.dz * g.dz);
+    const double bed =
+        props.rho_u[g.at(i, 0)] * V / dt + 2.0 * props.eta_n[g.at(i, 0)] * V / (g.dz * g.dz);
     EXPECT_NEAR(y[op.u_index(i, 0)], bed, 1e-12 * bed);
   }
 }

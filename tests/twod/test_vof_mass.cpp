@@ -5,20 +5,21 @@
 // translation the interface is back where it started.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
-#include "diagnostics.hpp"
-#include "grid.hpp"
-#include "initial_state.hpp"
-#include "vof_advection.hpp"
+#include "twod/diagnostics.hpp"
+#include "twod/grid.hpp"
+#include "twod/initial_state.hpp"
+#include "twod/vof_advection.hpp"
 
 using namespace granbench::twod;
 
 namespace {
-Grid make_grid() { return Grid(64, 32, 0.08, 0.008); }
+Grid make_grid() {
+  return Grid(64, 32, 0.08, 0.008);
+}
 
 std::vector<double> wavy_layer(const Grid& g) {
   SolverParams params;

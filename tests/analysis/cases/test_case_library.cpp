@@ -1,0 +1,95 @@
+// Case files (typed keys, resolution overrides, errors naming the key) and the grid-dependence
+// measure against exact answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "analysis/cases/case_file.hpp"
+#include "analysis/cases/grid_dependence.hpp"
+
+namespace granbench::cases {
+namespace {
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+TEST(CaseFile, ResolutionTablesOverrideTopLevelKeys) {
+  const CaseFile f = read_case_file(
+      write_file("gb_case_a.toml",
+                 "kind = \"decelerating\"\nt_end = 0.2\ncurves = [\"jop\", \"low-i\"]\n"
+                 "[smoke]\nt_end = 0.01\nnx = [16, 32]\n[run]\nnx = 160\n[smoke.run]\nnx = "
+                 "32\nt-end = 0.2\n"));
+  EXPECT_EQ(f.name(), "gb_case_a");
+  EXPECT_EQ(f.text("kind"), "decelerating");
+  EXPECT_DOUBLE_EQ(f.number("t_end", "paper"), 0.2);
+  EXPECT_DOUBLE_EQ(f.number("t_end", "smoke"), 0.01);
+  EXPECT_EQ(f.texts("curves"), (std::vector<std::string>{"jop", "low-i"}));
+  EXPECT_EQ(f.numbers("nx", "smoke"), (std::vector<double>{16, 32}));
+  const auto paper = f.table("run", "paper");
+  ASSERT_EQ(paper.size(), 1u);
+  EXPECT_EQ(paper.at("nx"), std::vector<std::string>{"160"});
+  const auto smoke = f.table("run", "smoke");
+  EXPECT_EQ(smoke.at("nx"), std::vector<std::string>{"32"});
+  EXPECT_EQ(smoke.at("t-end"), std::vector<std::string>{"0.2"});
+}
+
+TEST(CaseFile, ErrorsNameTheKeyAndTheRange) {
+  const CaseFile f = read_case_file(write_file("gb_case_b.toml", "angle = 95\nname = \"x\"\n"));
+  try {
+    f.number_in("angle", "paper", 0.0, 89.0);
+    FAIL();
+  } catch (const CaseFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("'angle' = 95 out of range; valid range [0, 89]"),
+              std::string::npos);
+  }
+  EXPECT_THROW(f.number("name"), CaseFileError);         // not a number
+  EXPECT_THROW(f.number("h0", "smoke"), CaseFileError);  // missing
+  EXPECT_THROW(read_case_file("/nonexistent/case.toml"), CaseFileError);
+}
+
+LayerRunRecord profile_record(int nz, double Lz, std::vector<double> I) {
+  LayerRunRecord r;
+  r.nz = nz, r.Lz = Lz, r.nx = 1, r.Lx = 1.0;
+  r.t = {0.0};
+  r.I_profile = {std::move(I)};
+  return r;
+}
+
+TEST(GridDependence, ExactForKnownProfiles) {
+  // Coarse: 4 cells on Lz = 2 h0 (h0 = 1): cells wholly below h0 - dz = 0.5: only k = 0.
+  // Use 8 coarse cells instead: dz = 0.25, bulk cells k = 0, 1, 2 (tops 0.25, 0.5, 0.75).
+  const double h0 = 1.0, Lz = 2.0;
+  std::vector<double> coarse(8, 1e-2), fine(16, 1e-2);
+  EXPECT_DOUBLE_EQ(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
+                       .rms_log10_I[0],
+                   0.0);
+  // The fine profile ten times larger in every bulk cell: one decade everywhere.
+  for (int k = 0; k < 6; ++k) fine[k] = 1e-1;
+  EXPECT_NEAR(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
+                  .rms_log10_I[0],
+              1.0, 1e-14);
+  // Only one of three bulk cells off by a decade (the pair of fine cells it covers): sqrt(1/3).
+  std::fill(fine.begin(), fine.end(), 1e-2);
+  fine[2] = fine[3] = 1e-1;
+  EXPECT_NEAR(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
+                  .rms_log10_I[0],
+              std::sqrt(1.0 / 3.0), 1e-14);
+  // Cells at and above h0 - dz are ignored.
+  std::fill(fine.begin(), fine.end(), 1e-2);
+  fine[6] = fine[7] = fine[12] = 5.0;
+  EXPECT_DOUBLE_EQ(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
+                       .rms_log10_I[0],
+                   0.0);
+  // Not a refinement in z: rejected.
+  EXPECT_THROW(grid_dependence(profile_record(8, Lz, coarse),
+                               profile_record(12, Lz, std::vector<double>(12, 1.0)), h0),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace granbench::cases

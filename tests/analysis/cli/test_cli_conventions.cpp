@@ -1,0 +1,81 @@
+// Conventions of the command line (qa.md, "Misleading" and "Conventions"): an unknown command is
+// named with a suggestion; --help shows examples and the exit codes; mu_s >= mu_d is refused;
+// --mu-inf has a validator and its errors name it; options that do not apply to the sweep's
+// model are refused, not ignored.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/support/run_granbench.hpp"
+
+namespace {
+
+using granbench::testing::run_granbench;
+
+granbench::testing::CommandResult run(const std::string& args) {
+  return run_granbench(args, "conventions_" + std::to_string(getpid()));
+}
+
+// Exit 2 with one line that starts "granbench: error: " + `start` and holds `parts`.
+void expect_refused(const std::string& args, const std::string& start,
+                    const std::vector<std::string>& parts = {}) {
+  const auto r = run(args);
+  EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(r.err.rfind("granbench: error: " + start, 0), 0u) << args << "\n" << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  for (const auto& p : parts) EXPECT_NE(r.err.find(p), std::string::npos) << p << " in " << r.err;
+}
+
+TEST(CliConventions, AnUnknownCommandIsNamedWithASuggestion) {
+  expect_refused("stead --angle 30", "unknown command 'stead'", {"(did you mean 'steady'?)"});
+  expect_refused("sweeep", "unknown command 'sweeep'", {"(did you mean 'sweep'?)"});
+  expect_refused("frobnicate", "unknown command 'frobnicate'", {"steady"});
+}
+
+TEST(CliConventions, HelpShowsExamplesAndExitCodes) {
+  for (const std::string cmd : {"", "steady ", "wellposed ", "dispersion ", "sweep "}) {
+    const auto r = run(cmd + "--help");
+    EXPECT_EQ(r.code, 0) << cmd;
+    EXPECT_NE(r.out.find("Examples:\n  granbench "), std::string::npos) << cmd << r.out;
+    EXPECT_NE(r.out.find("Exit codes:"), std::string::npos) << cmd << r.out;
+    EXPECT_NE(r.out.find("  2    bad input"), std::string::npos) << cmd << r.out;
+  }
+  const auto top = run("--help");
+  for (const char* code : {"  3 ", "  130 ", "  143 "})
+    EXPECT_NE(top.out.find(code), std::string::npos) << code;
+}
+
+TEST(CliConventions, FrictionCoefficientsAreChecked) {
+  expect_refused("steady --mu-s 0.6 --mu-d 0.5", "--mu-s", {"--mu-d", "mu_s < mu_d"});
+  expect_refused("steady --mu-s 0.5 --mu-d 0.5", "--mu-s");
+  expect_refused("steady --mu-inf -5", "--mu-inf", {"valid range"});
+  expect_refused("steady --mu-inf nan", "--mu-inf", {"valid range"});
+}
+
+TEST(CliConventions, SweepOptionsThatDoNotApplyToTheModelAreRefused) {
+  const std::string sweep = "sweep --Lx 0.08:0.08:1 --jobs 1 ";
+  expect_refused(sweep + "--model twod --nx 64", "--nx: does not apply to --model twod");
+  expect_refused(sweep + "--model twod --tolerance 1e-5", "--tolerance: does not apply");
+  expect_refused(sweep + "--model both --limiter minmod", "--limiter: does not apply");
+  expect_refused(sweep + "--model depthavg --viscosity-passes 2",
+                 "--viscosity-passes: does not apply to --model depthavg", {"--model twod"});
+  expect_refused(sweep + "--model depthavg --resolution coarse", "--resolution: does not apply");
+}
+
+}  // namespace
+
+// compare's grids and cases that no run can take are refused before any work (qa.md: compare
+// --nx 1 and huge grids ended in late internal errors or bad_alloc; jop at 29.1 deg and a 1e9 m
+// domain in exit 1), and so is a 2D output name that ParaView's XDMF readers cannot open.
+TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
+  const std::string dir = ::testing::TempDir();
+  const std::string quick =
+      " --t-end 0.05 --quiet --out " + dir + "gb_conv_c.h5 --plot " + dir + "gb_conv_c.png";
+  expect_refused("compare --nx 1" + quick, "--nx:", {"8"});
+  expect_refused("compare --nx 60000 --nz 4000" + quick, "--nx:", {"nx * nz"});
+  expect_refused("compare --curve jop --angle 29.1 --Lx 0.08" + quick, "--Lx:", {"2D linear"});
+  expect_refused("compare --Lx 1e9 --h0 29.1" + quick, "--Lx:", {"2D linear"});
+  expect_refused("run --model twod --t-end 0.01 --quiet --out 'a b.h5'", "--out:", {"white space"});
+}

@@ -1,0 +1,89 @@
+// The granbench command end to end: JSON values against the library, and bad input rejected
+// with exit code 2, one line naming the option, and no output file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+Result run(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string errfile = dir / "granbench_cli_err.txt";
+  const std::string cmd =
+      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + errfile;
+  Result r{};
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  FILE* e = fopen(errfile.c_str(), "r");
+  while (e && fgets(buf.data(), buf.size(), e)) r.err += buf.data();
+  if (e) fclose(e);
+  return r;
+}
+
+}  // namespace
+
+TEST(CliFoundation, WellposedJsonHasTheDocumentedKeys) {
+  const auto r = run("wellposed --curve regularised --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key :
+       {"curve", "I1N", "I2N", "well_posed_intervals", "A_minus", "I_max_wellposed"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_NEAR(j["I1N"].get<double>(), 0.003962813, 1e-9);
+  EXPECT_TRUE(run("wellposed --curve jop --json").out.find("\"A_minus\": null") !=
+              std::string::npos);
+}
+
+TEST(CliFoundation, SteadyAndDispersionJson) {
+  auto r = run("steady --angle 28.5 --h0 0.004 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"I_zeta", "u_surface", "u_mean", "Fr", "R", "Gamma", "nu", "well_posed"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_NEAR(j["I_zeta"].get<double>(), 0.404574, 1e-6);
+  r = run("dispersion --angle 28.5 --h0 0.004 --Lx 0.04 --Lx 0.08 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["modes"].size(), 2u);
+  EXPECT_TRUE(j.contains("cutoff_Lx"));
+  EXPECT_GT(j["modes"][1]["growth_rate"].get<double>(), 0.0);
+}
+
+TEST(CliFoundation, BadInputGivesOneLineExitTwoAndNoFile) {
+  const std::string out = std::filesystem::temp_directory_path() / "granbench_bad_input.h5";
+  struct Case {
+    std::string args, option;
+  };
+  const Case cases[] = {
+      {"wellposed --curve nonsense", "--curve"},
+      {"steady --h0 -0.001", "--h0"},
+      {"steady --h0 0", "--h0"},
+      {"steady --angle 90", "--angle"},
+      {"steady --angle 0", "--angle"},
+      {"steady --angle abc", "--angle"},
+      {"steady --curve jop --angle 35", "--angle"},
+      {"dispersion --Lx -1", "--Lx"},
+  };
+  for (const auto& c : cases) {
+    std::filesystem::remove(out);
+    const auto r = run(c.args + " --out " + out);
+    EXPECT_EQ(r.code, 2) << c.args;
+    EXPECT_NE(r.err.find(c.option), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("valid"), std::string::npos) << r.err;  // names the valid range
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
+  }
+}

@@ -1,0 +1,54 @@
+// Reproducibility from the output: `compare --json` gives, for each model, the `granbench run`
+// command line that reproduces its run (analysis/comparison/run_command.hpp). Run alone, that
+// command must report the same growth rate and phase speed to 1e-9 (relative): the same steps,
+// the same series, the same measurement. A small 2D grid and a short run keep it to seconds; the
+// Lx = 4 cm wave grows fast enough for both models to give a measured growth rate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/support/run_granbench.hpp"
+
+namespace {
+
+using granbench::testing::run_granbench;
+
+void expect_same_to_1e9(const nlohmann::json& a, const nlohmann::json& b, const char* key,
+                        const std::string& model) {
+  ASSERT_TRUE(a[key].is_number()) << model << " " << key << " not measured by compare: " << a;
+  ASSERT_TRUE(b[key].is_number()) << model << " " << key << " not measured by run: " << b;
+  const double x = a[key].get<double>(), y = b[key].get<double>();
+  EXPECT_LE(std::fabs(x - y), 1e-9 * std::fabs(x))
+      << model << " " << key << ": " << x << " vs " << y;
+}
+
+}  // namespace
+
+TEST(RunCommand, EachModelsRunCommandReproducesItsGrowthRateAndPhaseSpeed) {
+  const auto dir = std::filesystem::temp_directory_path() / "granbench_run_command";
+  std::filesystem::create_directories(dir);
+  const std::string h5 = (dir / "compare.h5").string(), png = (dir / "compare.png").string();
+  const auto c = run_granbench(
+      "compare --Lx 0.04 --nx 32 --nz 16 --nx-depthavg 64 --t-end 1.2 "
+      "--angle 29 --json --quiet --out " +
+          h5 + " --plot " + png,
+      "run_command");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const auto jc = nlohmann::json::parse(c.out);
+  for (const std::string model : {"depthavg", "twod"}) {
+    const auto& m = jc[model];
+    ASSERT_TRUE(m["run_command"].is_string()) << model;
+    const std::string cmd = m["run_command"].get<std::string>();
+    ASSERT_EQ(cmd.rfind("granbench run ", 0), 0u) << cmd;
+    const auto r = run_granbench(cmd.substr(std::string("granbench ").size()) + " --json --quiet",
+                                 "run_command_" + model);
+    ASSERT_EQ(r.code, 0) << cmd << "\n" << r.err;
+    const auto jr = nlohmann::json::parse(r.out);
+    expect_same_to_1e9(m, jr, "growth_rate", model);
+    expect_same_to_1e9(m, jr, "phase_speed", model);
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,160 @@
+// Every option of `granbench sweep` that changes a result is stored with the points, so that a
+// resume can refuse a file computed with another value (qa.md: --viscosity-passes was not, and
+// old growth rates came back labelled with the new setting). The options are enumerated from the
+// registered subcommand, not from a list kept here: for each model and each option, a value other
+// than the default must either change the stored settings (sweep.hpp: stored_settings) or be
+// refused as not applying to that model; only the options listed in
+// sweep_options_without_effect_on_results() are exempt.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analysis/cli/sweep_plan.hpp"
+
+namespace {
+
+using namespace granbench;
+using namespace granbench::cli;
+
+enum class Outcome { Stored, Refused, Ignored, Invalid };
+
+struct Trial {
+  Outcome outcome;
+  std::string detail;
+};
+
+using Settings = std::vector<std::pair<std::string, double>>;
+
+// The stored settings of `sweep --model MODEL [option value]`.
+Trial try_value(const std::string& model, const std::string& option, const std::string& value,
+                const Settings& baseline) {
+  CLI::App app;
+  SweepOptions o;
+  add_sweep_options(app, o);
+  std::vector<std::string> args = {"--model", model};
+  if (!option.empty()) args.insert(args.end(), {option, value});
+  std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+  try {
+    app.parse(args);
+  } catch (const CLI::ParseError& e) {
+    return {Outcome::Invalid, e.what()};
+  }
+  SweepPlan plan;
+  try {
+    plan = plan_sweep(o, app);
+  } catch (const UsageError& e) {
+    const std::string what = e.what();
+    // Refused as not applying to the model (not for a value out of range).
+    if (what.rfind(option + ": does not apply to --model", 0) == 0) return {Outcome::Refused, what};
+    return {Outcome::Invalid, what};
+  }
+  const Settings stored = stored_settings(plan.spec);
+  if (option.empty() || stored != baseline) return {Outcome::Stored, ""};
+  return {Outcome::Ignored, ""};
+}
+
+// Values to try instead of the default: the other allowed values of a choice, else numbers near
+// the default and a few plain ones (the first valid one is enough).
+std::vector<std::string> candidates(const CLI::Option& opt) {
+  std::vector<std::string> v;
+  const std::string def = opt.get_default_str();
+  const std::string type = opt.get_type_name();
+  const auto brace = type.find('{');
+  if (brace != std::string::npos) {
+    std::istringstream list(type.substr(brace + 1, type.find('}') - brace - 1));
+    for (std::string item; std::getline(list, item, ',');)
+      if (item != def) v.push_back(item);
+  }
+  try {
+    const double d = std::stod(def);
+    for (double x : {d * 1.25, d * 0.8, d + 1.0, d - 1.0, d * 2.0}) {
+      std::ostringstream s;
+      s << x;
+      if (s.str() != def) v.push_back(s.str());
+    }
+  } catch (const std::exception&) {
+  }
+  for (const char* x : {"0", "0.5", "1.5", "2", "3", "bagnold"}) v.push_back(x);
+  return v;
+}
+
+TEST(SweepSettings, EveryOptionThatChangesAResultIsStoredOrRefused) {
+  CLI::App app;
+  SweepOptions defaults;
+  add_sweep_options(app, defaults);
+  const auto& neutral = sweep_options_without_effect_on_results();
+  for (const std::string model : {"depthavg", "twod", "both"}) {
+    const Trial base = try_value(model, "", "", {});
+    ASSERT_EQ(base.outcome, Outcome::Stored) << model << ": " << base.detail;
+    CLI::App reference;
+    SweepOptions o;
+    add_sweep_options(reference, o);
+    std::vector<std::string> args = {"--model", model};
+    std::reverse(args.begin(), args.end());
+    reference.parse(args);
+    const Settings baseline = stored_settings(plan_sweep(o, reference).spec);
+    int checked = 0;
+    for (const CLI::Option* opt : app.get_options()) {
+      const std::string name = opt->get_name();
+      if (neutral.count(name)) continue;
+      ++checked;
+      bool valid = false, refused = false, stored = false;
+      std::string last;
+      for (const std::string& value : candidates(*opt)) {
+        const Trial t = try_value(model, name, value, baseline);
+        if (t.outcome == Outcome::Invalid) {
+          last = t.detail;
+          continue;
+        }
+        valid = true;
+        refused = refused || t.outcome == Outcome::Refused;
+        stored = stored || t.outcome == Outcome::Stored;
+        if (stored || refused) break;
+      }
+      EXPECT_TRUE(valid) << "--model " << model << " " << name
+                         << ": no other valid value found to try (" << last << ")";
+      EXPECT_TRUE(!valid || stored || refused)
+          << "--model " << model << " " << name
+          << " changes no stored setting and is not refused: a resume would mix its results";
+    }
+    EXPECT_GT(checked, 15) << model;
+  }
+}
+
+// The exemptions name registered options only (a renamed option must not stay exempt by mistake).
+TEST(SweepSettings, EveryExemptOptionExists) {
+  CLI::App app;
+  SweepOptions o;
+  add_sweep_options(app, o);
+  for (const auto& [name, why] : sweep_options_without_effect_on_results())
+    EXPECT_NE(app.get_option_no_throw(name), nullptr) << name << " (" << why << ")";
+}
+
+// A stored sweep with another --viscosity-passes is refused on resume, naming the setting.
+TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
+  SweepSpec spec;
+  spec.Lx = {0.08};
+  spec.depthavg = false;
+  spec.twod = true;
+  spec.out = (std::filesystem::temp_directory_path() /
+              ("gb_sweep_vp_" + std::to_string(::getpid()) + ".h5"))
+                 .string();
+  write_sweep(spec.out, spec, {});
+  EXPECT_NO_THROW(check_stored_settings(spec.out, spec));
+  spec.twod_settings.viscosity_passes = 2;
+  try {
+    check_stored_settings(spec.out, spec);
+    ADD_FAILURE() << "accepted a sweep stored with another --viscosity-passes";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("twod_viscosity_passes"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(spec.out);
+}
+
+}  // namespace

@@ -1,4 +1,4 @@
-// Benchmark (not a test) of the depth-averaged solver, issue 3 item 7.
+// Benchmark (not a test) of the depth-averaged solver.
 //
 // 1. The rollwave case of §7: Lx = 0.08 m, zeta = 28.5 deg, h0 = 4 mm, a0 = 0.2 mm (7.2),
 //    regularised curve (6.3)-(6.4), nx = 512, t_end = 10 s, the settings of `granbench run`

@@ -202,4 +202,13 @@ bool progress_enabled(const OutputOptions& o) {
   return !o.quiet && isatty(STDERR_FILENO);
 }
 
+std::string eta_text(double wall_seconds, double t_start, double t, double t_end) {
+  if (!(t > t_start) || !(wall_seconds > 0.0)) return "ETA -";
+  const long left = std::lround(wall_seconds * (t_end - t) / (t - t_start));
+  if (left < 60) return "ETA " + std::to_string(left) + " s";
+  if (left < 3600)
+    return "ETA " + std::to_string(left / 60) + " min " + std::to_string(left % 60) + " s";
+  return "ETA " + std::to_string(left / 3600) + " h " + std::to_string(left % 3600 / 60) + " min";
+}
+
 }  // namespace granbench::cli

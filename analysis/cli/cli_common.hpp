@@ -62,4 +62,8 @@ void run_plot_script(const std::string& script, const std::string& h5, const std
 // Show progress only on a terminal and without --quiet (docs/design.md).
 bool progress_enabled(const OutputOptions& o);
 
+// "ETA 3 min 12 s": the wall time left if the run keeps its pace so far, from the wall seconds
+// since it started and the simulated times (t_start, t, t_end); "ETA -" before any progress.
+std::string eta_text(double wall_seconds, double t_start, double t, double t_end);
+
 }  // namespace granbench::cli

@@ -3,6 +3,7 @@
 // same analysis code, beside the exact linear theories at the same k_hat: (7.11), its chi = 5/4
 // form and the 2D linear stability. Prints the side-by-side table (or --json), writes compare.h5
 // (both SurfaceSeries, the analysis, the resolved configuration) and compare.png (figure 12 style).
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -83,10 +84,13 @@ void run_compare(const CompareOptions& o) {
   RunControl ctl;
   ctl.stop = guard.flag();
   if (show)
-    ctl.progress = [&](const std::string& model, double t, double t_end) {
+    ctl.progress = [&, wall0 = std::chrono::steady_clock::now()](const std::string& model, double t,
+                                                                 double t_end) {
       std::lock_guard lock(io);
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
       std::cerr << "\r  " << model << ": t = " << std::fixed << std::setprecision(2) << t << " / "
-                << t_end << " s   " << std::flush;
+                << t_end << " s, " << eta_text(wall, 0.0, t, t_end) << "    " << std::flush;
     };
 
   Comparison c;

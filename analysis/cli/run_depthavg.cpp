@@ -5,6 +5,7 @@
 // the paper's estimator (7.12), and the speed of the developed wave by cross-correlation.
 // The options and paths are checked before any work; a stop (SIGINT, SIGTERM) or a failure keeps
 // what was computed (failure_policy.hpp).
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -69,9 +70,11 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   cb.stop = guard.flag();
   const bool progress = progress_enabled(o.output);
   if (progress)
-    cb.progress = [](double t, double t_end) {
-      std::cerr << "\r  t = " << std::fixed << std::setprecision(3) << t << " / " << t_end << " s"
-                << std::flush;
+    cb.progress = [wall0 = std::chrono::steady_clock::now()](double t, double t_end) {
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      std::cerr << "\r  t = " << std::fixed << std::setprecision(3) << t << " / " << t_end << " s, "
+                << eta_text(wall, 0.0, t, t_end) << "    " << std::flush;
     };
   const depthavg::RunResult r = solver.run(U0, out, cb);
   if (progress) std::cerr << "\n";

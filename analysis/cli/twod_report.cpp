@@ -17,15 +17,19 @@ std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_lin
     const RunOptions& o, bool show) {
   if (!show) return {};
   const auto wall0 = std::chrono::steady_clock::now();
-  return [wall0, t_end = o.t_end, last = 0.0](const twod::Solver& s, const SurfaceSeries&) mutable {
+  // t_start: the first sample's time (a restart's is the checkpoint's), for the ETA
+  return [wall0, t_end = o.t_end, last = 0.0, t_start = -1.0](const twod::Solver& s,
+                                                              const SurfaceSeries&) mutable {
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    if (t_start < 0.0) t_start = s.state().t;
     if (wall - last <= 1.0) return;
     last = wall;
     std::cerr << "\r  t = " << std::fixed << std::setprecision(4) << s.state().t << " / " << t_end
               << " s, step " << s.statistics().steps << ", dt " << std::scientific
               << std::setprecision(2) << s.statistics().dt_last << " s, wall " << std::fixed
-              << std::setprecision(0) << wall << " s    " << std::flush;
+              << std::setprecision(0) << wall << " s, "
+              << eta_text(wall, t_start, s.state().t, t_end) << "    " << std::flush;
   };
 }
 

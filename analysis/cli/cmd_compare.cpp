@@ -17,6 +17,7 @@
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/compare_report.hpp"
 #include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/physics_warnings.hpp"
 #include "analysis/cli/run_model.hpp"
 #include "analysis/comparison/compare.hpp"
 #include "analysis/comparison/compare_output.hpp"
@@ -66,6 +67,8 @@ void run_compare(const CompareOptions& o) {
   if (long(twod.nx) * twod.nz > kMaxTwodCells)
     throw UsageError("--nx: " + std::to_string(twod.nx) + " x " + std::to_string(twod.nz) +
                      " 2D cells; valid range nx * nz <= " + std::to_string(kMaxTwodCells));
+  const std::vector<std::string> warnings =
+      twod_warnings(chute.steady(), twod.domain_height(chute.h0) / twod.nz);
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
@@ -106,6 +109,7 @@ void run_compare(const CompareOptions& o) {
                      std::to_string(2.0 * std::numbers::pi * chute.h0 / chute.Lx) + " (" +
                      e.what() + "); choose another --Lx or --h0");
   }
+  print_warnings(warnings);  // once every check has passed
   // Both models at once (run_both shares the cores).
   std::tie(c.depthavg, c.twod) = run_both(chute, depthavg, twod, ctl);
   if (show) std::cerr << "\n";
@@ -136,6 +140,7 @@ void run_compare(const CompareOptions& o) {
                 {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
                 {"twod", model_json(c.twod, c.twod_measured)},
                 {"twod_viscosity_passes", twod.viscosity_passes},
+                {"warnings", warnings},
                 {"out", h5},
                 {"plot", png}});
   } else {

@@ -18,6 +18,7 @@
 #include <stdexcept>
 
 #include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/physics_warnings.hpp"
 #include "analysis/comparison/eigenmode_seed.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
 #include "twod/checkpoint.hpp"
@@ -61,6 +62,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   const SolverParams params = twod_solver_params(o, mo, Lz);
   const Grid grid(int(o.nx), mo.nz, o.Lx, Lz);
   const SteadyState base = o.flow.steady();
+  const std::vector<std::string> warnings = twod_warnings(base, grid.dz);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   const double wavelength = o.Lx / o.mode;
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so
@@ -124,6 +126,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
     throw UsageError("--out: " + std::string(e.what()));
   }
 
+  print_warnings(warnings);  // once every check has passed
   // --- the run ---
   RunHooks hooks;
   hooks.stop = stop;
@@ -146,6 +149,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   report.measured = measure(res.series, measure_opt);
   report.json = twod_result_json(res, solver, base, report.measured, seeded_speed, schedule.dt_out);
   report.json["status"] = run_status_name(res.status);
+  report.json["warnings"] = warnings;
   report.json["message"] = message;
   report.json["eta_max"] = mo.eta_max;
   output->finish(res.series, run_status_name(res.status), message, report.json.dump());

@@ -1,0 +1,21 @@
+// Warnings about a 2D run that a user should see before trusting its numbers, printed on stderr
+// ("granbench: warning: ...", also with --quiet) and listed in the JSON under "warnings":
+//  - the base state is ill posed: C(I_zeta) > 0 (3.9), where the incompressible mu(I) equations
+//    amplify short waves without bound and results depend on the grid (§3-§5);
+//  - the grid has fewer than 32 cells per h0, the resolution below which the measured 2D growth
+//    rate is more than 10 % under the exact 2D theory (docs/twod-validation.md, the README).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/steady_state.hpp"
+
+namespace granbench::cli {
+
+inline constexpr double kTrustedCellsPerDepth = 32.0;
+
+std::vector<std::string> twod_warnings(const SteadyState& base, double dz);
+void print_warnings(const std::vector<std::string>& warnings);
+
+}  // namespace granbench::cli

@@ -1,0 +1,32 @@
+// The physics warnings of a 2D run (physics_warnings.hpp): an ill-posed base state and a grid
+// coarser than 32 cells per h0 are named; a well-posed base state on the trusted grid gets none.
+#include <gtest/gtest.h>
+
+#include "analysis/cli/physics_warnings.hpp"
+#include "common/mu_curves.hpp"
+
+using namespace granbench;
+
+namespace {
+SteadyState section7(CurveKind kind, double angle_deg) {
+  const MuCurve c(kind, Material{}, 4e-3);
+  return steady_state(c, degrees_to_radians(angle_deg), 4e-3);
+}
+}  // namespace
+
+TEST(PhysicsWarnings, IllPosedBaseStateAndCoarseGridAreNamed) {
+  const SteadyState good = section7(CurveKind::Regularised, 28.5);
+  ASSERT_TRUE(good.well_posed);
+  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 32.0).empty());
+  EXPECT_TRUE(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0).empty());  // the default grid, mid-cell
+  const auto coarse = cli::twod_warnings(good, 4e-3 / 16.0);
+  ASSERT_EQ(coarse.size(), 1u);
+  EXPECT_NE(coarse[0].find("16 cells per h0"), std::string::npos) << coarse[0];
+
+  // Jop's curve is ill posed at high inertial number (§3): the steepest slope it allows.
+  const SteadyState steep = section7(CurveKind::Jop, 29.0);
+  ASSERT_FALSE(steep.well_posed) << "I_zeta " << steep.I_zeta;
+  const auto w = cli::twod_warnings(steep, 4e-3 / 32.0);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("ill posed"), std::string::npos) << w[0];
+}

@@ -7,6 +7,9 @@
 // Model-independent options live in RunOptions (run_model.hpp); each model adds its own options
 // and has its own run_<model>.cpp. The model is chosen once, here.
 #include <memory>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
@@ -78,6 +81,31 @@ void check_run_options(const RunOptions& o) {
     throw UsageError("--mode: " + std::to_string(o.mode) + " out of range; valid range [1, nx/2]");
 }
 
+namespace {
+
+// The names of the options that `add` registers on `app`.
+template <class Add>
+std::vector<std::string> options_added(CLI::App& app, Add add) {
+  std::set<std::string> before;
+  for (const CLI::Option* opt : app.get_options()) before.insert(opt->get_name());
+  add();
+  std::vector<std::string> added;
+  for (const CLI::Option* opt : app.get_options())
+    if (!before.count(opt->get_name())) added.push_back(opt->get_name());
+  return added;
+}
+
+// An option given (on the command line or in --config) that the chosen model does not read is
+// refused, not ignored: a user who set it believes it changed the run.
+void refuse_options_of_other_model(const CLI::App& app, const std::vector<std::string>& names,
+                                   const std::string& owner) {
+  for (const std::string& name : names)
+    if (app.get_option(name)->count() > 0)
+      throw UsageError(name + ": applies to --model " + owner + " only");
+}
+
+}  // namespace
+
 void add_run_command(CLI::App& app) {
   auto run = std::make_shared<RunOptions>();
   auto depthavg = std::make_shared<DepthAvgOptions>();
@@ -85,11 +113,19 @@ void add_run_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "run", "simulate the periodic chute flow from a perturbation; measure growth and speed");
   add_run_options(*sub, *run);
-  add_depthavg_options(*sub, *depthavg);
-  add_twod_options(*sub, *twod);
+  // CVODE's options are the depth-averaged model's; the rest of add_run_options serve both.
+  std::vector<std::string> depthavg_only{"--rtol", "--atol", "--bdf-order"};
+  for (const auto& name : options_added(*sub, [&] { add_depthavg_options(*sub, *depthavg); }))
+    depthavg_only.push_back(name);
+  const std::vector<std::string> twod_only =
+      options_added(*sub, [&] { add_twod_options(*sub, *twod); });
   sub->footer(exit_codes_help());
-  sub->callback([run, depthavg, twod] {
+  sub->callback([sub, run, depthavg, twod, depthavg_only, twod_only] {
     check_run_options(*run);
+    if (parse_model(run->model) == Model::TwoD)
+      refuse_options_of_other_model(*sub, depthavg_only, "depthavg");
+    else
+      refuse_options_of_other_model(*sub, twod_only, "twod");
     switch (parse_model(run->model)) {
       case Model::DepthAvg:
         run_depthavg(*run, *depthavg);

@@ -79,3 +79,13 @@ TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
   expect_refused("compare --Lx 1e9 --h0 29.1" + quick, "--Lx:", {"2D linear"});
   expect_refused("run --model twod --t-end 0.01 --quiet --out 'a b.h5'", "--out:", {"white space"});
 }
+
+// run: an option of the other model is refused, not silently ignored (qa.md: sweep --model twod
+// ignored --nx and --tolerance; run did the same with every model option).
+TEST(CliConventions, RunRefusesTheOptionsOfTheOtherModel) {
+  expect_refused("run --model twod --t-end 0.01 --rtol 1e-5",
+                 "--rtol: applies to --model depthavg");
+  expect_refused("run --model twod --t-end 0.01 --chi 1.25", "--chi: applies to --model depthavg");
+  expect_refused("run --model depthavg --t-end 0.01 --nz 16", "--nz: applies to --model twod");
+  expect_refused("run --t-end 0.01 --eta-max 1", "--eta-max: applies to --model twod");
+}

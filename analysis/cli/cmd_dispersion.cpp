@@ -160,7 +160,7 @@ void add_dispersion_command(CLI::App& app) {
   sub->add_option("--theory", opts->theory, "linear theory {depthavg,depthavg-bagnold,twod}")
       ->check(one_of({"depthavg", "depthavg-bagnold", "twod"}))
       ->capture_default_str();
-  sub->add_option("--resolution", opts->resolution,
+  sub->add_option("--chebyshev", opts->resolution,
                   "Chebyshev intervals for --theory twod, in [8, 160] (check at 3N/2)")
       ->capture_default_str();
   const std::string light = "Light layer (--theory twod --light-layer)";

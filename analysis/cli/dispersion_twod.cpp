@@ -126,7 +126,7 @@ void write_theories(const std::string& path, const SteadyState& s,
 void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::vector<double>& Lx,
                          const TwoDDispersionOptions& t, const OutputOptions& output) {
   if (t.N < 8 || t.N > 160)
-    throw UsageError("--resolution: Chebyshev intervals for --theory twod must be in [8, 160]");
+    throw UsageError("--chebyshev: Chebyshev intervals for --theory twod must be in [8, 160]");
   Linear2DOptions opt;
   opt.N = t.N;
   opt.N_check = t.N + t.N / 2;

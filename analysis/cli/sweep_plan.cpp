@@ -36,7 +36,7 @@ void refuse_options_that_do_not_apply(const SweepOptions& o, const CLI::App& app
     std::vector<std::string> models;  // the models it changes
   };
   const Rule rules[] = {{"--nx", {"depthavg"}},
-                        {"--tolerance", {"depthavg"}},
+                        {"--seed-tolerance", {"depthavg"}},
                         {"--limiter", {"depthavg"}},
                         {"--chi", {"depthavg", "both"}},
                         {"--frame-speed", {"depthavg", "both"}},
@@ -68,7 +68,7 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
   sub.add_option("--nx", o.nx, "cells per domain (--model depthavg), in [16, 65536]")
       ->check(CLI::Range(std::size_t{16}, std::size_t{65536}))
       ->capture_default_str();
-  sub.add_option("--tolerance", o.tolerance,
+  sub.add_option("--seed-tolerance", o.tolerance,
                  "CVODE tolerance relative to the seeded perturbation (amplitude 1e-4 h0) "
                  "(--model depthavg), in (0, 1)")
       ->check(open_range(0.0, 1.0))

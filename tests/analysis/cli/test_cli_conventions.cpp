@@ -57,7 +57,7 @@ TEST(CliConventions, FrictionCoefficientsAreChecked) {
 TEST(CliConventions, SweepOptionsThatDoNotApplyToTheModelAreRefused) {
   const std::string sweep = "sweep --Lx 0.08:0.08:1 --jobs 1 ";
   expect_refused(sweep + "--model twod --nx 64", "--nx: does not apply to --model twod");
-  expect_refused(sweep + "--model twod --tolerance 1e-5", "--tolerance: does not apply");
+  expect_refused(sweep + "--model twod --seed-tolerance 1e-5", "--seed-tolerance: does not apply");
   expect_refused(sweep + "--model both --limiter minmod", "--limiter: does not apply");
   expect_refused(sweep + "--model depthavg --viscosity-passes 2",
                  "--viscosity-passes: does not apply to --model depthavg", {"--model twod"});

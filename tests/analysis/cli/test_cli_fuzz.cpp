@@ -36,7 +36,7 @@ const std::vector<Command> kCommands = {
     {"run --model twod --nx 24 --nz 12 --t-end 0.01 --json --quiet",
      {"--angle", "--h0", "--Lx", "--nx", "--nz", "--a0", "--t-end", "--dt-out", "--curve"}},
     {"sweep --model depthavg --nx 32 --jobs 1 --Lx 0.08:0.08:1 --json --quiet",
-     {"--angle", "--h0", "--Lx", "--nx", "--tolerance", "--t-end", "--chi", "--frame-speed",
+     {"--angle", "--h0", "--Lx", "--nx", "--seed-tolerance", "--t-end", "--chi", "--frame-speed",
       "--model", "--curve"}},
     {"compare --nx 24 --nz 12 --nx-depthavg 40 --t-end 0.02 --json --quiet",
      {"--angle", "--h0", "--Lx", "--nx", "--nz", "--nx-depthavg", "--t-end", "--a0", "--curve"}},

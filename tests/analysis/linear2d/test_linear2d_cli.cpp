@@ -58,9 +58,9 @@ TEST(Linear2DCli, IllPosedBaseStateIsReported) {
 TEST(Linear2DCli, BadResolutionIsRejectedWithoutOutput) {
   const auto out = std::filesystem::temp_directory_path() / "granbench_linear2d_bad.h5";
   std::filesystem::remove(out);
-  const auto r = run("dispersion --theory twod --Lx 0.08 --resolution 4 --out " + out.string());
+  const auto r = run("dispersion --theory twod --Lx 0.08 --chebyshev 4 --out " + out.string());
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--chebyshev"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[8, 160]"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
 }

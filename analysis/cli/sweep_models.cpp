@@ -24,7 +24,8 @@ struct SharedSweep {
   bool root = true;
   int ranks = 1;
   bool interrupted = false;
-  std::string refused, failure;  // the stored sweep does not match; writing --out failed
+  int interrupt_exit_code = 130;  // 128 + the signal (SIGINT 130, SIGTERM 143)
+  std::string refused, failure;   // the stored sweep does not match; writing --out failed
 };
 
 // Steps 1-3 of sweep_models.hpp. Every rank takes the same path through the collective calls;
@@ -61,7 +62,9 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
   auto finished = unpack_points(std::span(kept).subspan(1));
   for (SweepPoint& p : finished) p.resumed = true;
 
-  const InterruptGuard guard;
+  // SIGTERM (batch systems, `timeout`, containers) stops a sweep like Ctrl-C: the finished points
+  // are kept (failure_policy.hpp).
+  const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   std::mutex io;
   const bool show = s.root && progress_enabled(output);
   SweepProgress progress;
@@ -75,6 +78,7 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
   auto ran = run_share(spec, finished, progress);
   if (s.ranks > 1) ran = unpack_points(mpi.gather(pack_points(ran)));
   s.interrupted = guard.flag()->load();
+  s.interrupt_exit_code = guard.exit_code();
   if (s.root) try {
       s.points = finished;
       s.points.insert(s.points.end(), ran.begin(), ran.end());
@@ -204,7 +208,7 @@ void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohma
   if (finished < expected && s.interrupted)
     throw CommandFailed("interrupted with " + std::to_string(finished) + " of " +
                             std::to_string(expected) + " points" + kept,
-                        130);
+                        s.interrupt_exit_code);
   if (finished < expected) {
     const auto bad = std::find_if(points.begin(), points.end(),
                                   [](const SweepPoint& p) { return !p.completed; });

@@ -80,3 +80,21 @@ TEST(SweepOutput, AnInterruptedSweepWithPlotButNoOutDoesNotClaimToKeepItsPoints)
 }
 
 }  // namespace
+
+namespace {
+
+// SIGTERM (a scheduler's or `timeout`'s stop) ends a sweep like Ctrl-C, with exit 143: before,
+// only SIGINT was caught and SIGTERM killed the process.
+TEST(SweepOutput, SigtermStopsASweepLikeCtrlCWithExit143) {
+  const fs::path dir = temp_dir("sweep_term");
+  const auto r = run_granbench(
+      "sweep --model twod --resolution coarse --Lx 0.08:0.08:1 --t-end 60"
+      " --jobs 1 --quiet --plot sweep.png",
+      "sweep_term_" + std::to_string(getpid()),
+      "cd " + dir.string() + " && timeout --preserve-status -s TERM 3 ");
+  EXPECT_EQ(r.code, 143) << r.err;
+  EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace

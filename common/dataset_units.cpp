@@ -75,6 +75,7 @@ const std::map<std::string, DatasetDoc>& by_name() {
       {"u_profile", {"m/s", "downslope velocity profile u(z, t)"}},
       {"I_profile", {"1", "inertial-number profile I(z, t); NaN where p <= 0"}},
       {"I_field", {"1", "inertial number I(x, z, t); NaN where p <= 0"}},
+      {"xz_nodes", {"m", "(x, z) of every cell node, [nz+1][nx+1][2], x fastest"}},
       {"max_speed", {"m/s", "largest speed in the domain"}},
       {"illposed_fraction", {"1", "fraction of granular cells where the flow is ill posed"}},
       {"rms_log10_I", {"1", "root-mean-square of log10 I over the layer"}},

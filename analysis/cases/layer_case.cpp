@@ -3,6 +3,7 @@
 #include "analysis/cases/layer_case.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "analysis/cases/layer_xdmf.hpp"
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
 
@@ -248,6 +250,17 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
     out.write(g + "/u_profile", u, {nt, nz});
     out.write(g + "/I_profile", I, {nt, nz});
     out.write(g + "/I_field", field, {nt, std::size_t(run.nz), std::size_t(run.nx)});
+    // For the XDMF index: the node coordinates, and I at each sample as its own [nz][nx] dataset.
+    // ParaView's Xdmf3 readers do not read a hyperslab of I_field (tried: no array), so the
+    // samples are stored once more; I_field stays for the figures.
+    out.write(g + "/xz_nodes", layer_run_nodes(run),
+              {std::size_t(run.nz) + 1, std::size_t(run.nx) + 1, 2});
+    out.create_group(g + "/samples");
+    for (std::size_t n = 0; n < nt; ++n) {
+      const std::string sample = g + "/samples/" + layer_sample_name(n);
+      out.create_group(sample);
+      out.write(sample + "/I", run.I_field[n], {std::size_t(run.nz), std::size_t(run.nx)});
+    }
     out.write(g + "/max_speed", run.max_speed);
     out.write(g + "/illposed_fraction", run.illposed_fraction);
     out.attribute(g, "curve", std::string(curve_name(s.params.rheology.curve)));
@@ -275,6 +288,10 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
     out.attribute(g, "curve", curve);
   }
   out.close();
+  // The XDMF index beside it (NAME.xdmf), referencing the HDF5 file by its name.
+  const std::filesystem::path h5(path);
+  write_layer_case_xdmf(std::filesystem::path(h5).replace_extension(".xdmf").string(),
+                        h5.filename().string(), r);
 }
 
 }  // namespace granbench::cases

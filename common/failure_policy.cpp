@@ -35,17 +35,6 @@ Handler& previous_handler(int sig) {
 
 }  // namespace
 
-const char* exit_codes_help() {
-  return "Exit codes:\n"
-         "  0    completed\n"
-         "  1    internal error (a defect; please report it)\n"
-         "  2    bad input or an unwritable output/checkpoint path, found before any work\n"
-         "  3    the run diverged or failed; data up to the last good sample is kept, with\n"
-         "       status \"diverged\"/\"failed\", the time, the place and the cause\n"
-         "  130  stopped by SIGINT (Ctrl-C); what was computed is kept, status \"interrupted\"\n"
-         "  143  stopped by SIGTERM; as for 130\n";
-}
-
 InterruptGuard::InterruptGuard(Signals signals) : term_(signals == Signals::IntAndTerm) {
   interrupt_flag().store(false);
   caught_signal() = 0;

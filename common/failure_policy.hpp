@@ -19,8 +19,6 @@ enum ExitCode : int {
   kExitSigint = 128 + SIGINT,
   kExitSigterm = 128 + SIGTERM,
 };
-// The exit-code table of `--help` and the README, one line per code.
-const char* exit_codes_help();
 
 // SIGINT (and with Signals::IntAndTerm also SIGTERM) raises the flag instead of killing the
 // process while a guard lives, so that a run stops at its next sample and keeps what it

@@ -22,6 +22,7 @@
 #include "analysis/cli/case_report.hpp"
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/run_model.hpp"
 #include "analysis/cli/run_twod.hpp"
@@ -213,7 +214,10 @@ void add_case_command(CLI::App& app) {
   sub->add_flag("--json", o->output.json, "print the results as JSON");
   sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");
   add_threads_option(*sub);
-  sub->footer(exit_codes_help());
+  sub->footer(
+      help_footer({"granbench case --list", "granbench case decelerating --resolution smoke",
+                   "granbench case rollwave-12cm --out-dir results"},
+                  {0, 2, 3, 130, 143}));
   sub->callback([o] { run_case(*o); });
 }
 

@@ -16,6 +16,7 @@
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/compare_report.hpp"
+#include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
 #include "analysis/cli/run_model.hpp"
@@ -166,7 +167,10 @@ void add_compare_command(CLI::App& app) {
   add_flow_options(*sub, o->flow);
   add_output_options(*sub, o->output);
   add_threads_option(*sub);
-  sub->footer(exit_codes_help());
+  sub->footer(help_footer(
+      {"granbench compare --Lx 0.08", "granbench compare --Lx 0.04 --resolution coarse --json",
+       "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5"},
+      {0, 2, 3, 130, 143}));
   sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")
       ->check(positive())
       ->capture_default_str();

@@ -13,6 +13,7 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/run_model.hpp"
 #include "analysis/cli/run_twod.hpp"
 #include "common/failure_policy.hpp"
@@ -119,7 +120,11 @@ void add_run_command(CLI::App& app) {
     depthavg_only.push_back(name);
   const std::vector<std::string> twod_only =
       options_added(*sub, [&] { add_twod_options(*sub, *twod); });
-  sub->footer(exit_codes_help());
+  sub->footer(help_footer(
+      {"granbench run --model depthavg --angle 28.5 --h0 0.004 --Lx 0.08 --nx 512 --t-end 10",
+       "granbench run --model twod --init eigenmode --a0 2e-5 --t-end 2 --out run.h5 --json",
+       "granbench run --model twod --restart run.checkpoint.h5 --t-end 10 --out run.h5"},
+      {0, 2, 3, 130, 143}));
   sub->callback([sub, run, depthavg, twod, depthavg_only, twod_only] {
     check_run_options(*run);
     if (parse_model(run->model) == Model::TwoD)

@@ -124,6 +124,18 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
       r.message += "; no checkpoint: " + std::string(e.what());
     }
   }
+  // The output always ends with the last state: at an interruption after its checkpoint (whose
+  // snapshot list is what a restart carries over, so a restarted output still matches an
+  // uninterrupted one), and at a divergence or failure for the diagnosis (the fields may hold the
+  // non-finite values that stopped it).
+  if (hooks.snapshot && r.status != RunStatus::Completed &&
+      !reached(last_snapshot, solver.state().t)) {
+    try {
+      snapshot();
+    } catch (const std::exception& e) {
+      r.message += "; no snapshot of the last state: " + std::string(e.what());
+    }
+  }
 
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   r.I_min = std::isfinite(I_lo) ? I_lo : nan;

@@ -12,6 +12,7 @@
 // solver halves the last two steps before an event instead of taking a sliver, so every event
 // time counts).
 //
+// A run that stops early (interrupted, diverged, failed) ends with a snapshot of its last state.
 // When the run completes and t_end is not on the snapshot grid, a last snapshot is taken at
 // t_end, so that the output always ends with the final state.
 //

@@ -201,3 +201,37 @@ TEST(TwodRun, DivergenceIsReportedWithTheSamplesSoFar) {
   EXPECT_EQ(r.series.nt(), 1u);  // the initial state
   EXPECT_FALSE(r.message.empty());
 }
+
+// A run that stops early ends with a snapshot of its last state: after an interruption's
+// checkpoint (so the checkpoint's snapshot list, which a restart carries over, does not hold it),
+// and after a divergence.
+TEST(TwodRun, AStoppedOrDivergedRunEndsWithASnapshotOfItsLastState) {
+  Case c;
+  std::atomic<bool> stop{false};
+  std::vector<double> snapshot_times;
+  int checkpoints = 0, checkpoints_before_last_snapshot = -1;
+  RunHooks hooks;
+  hooks.stop = &stop;
+  hooks.snapshot = [&](const Solver& s) {
+    snapshot_times.push_back(s.state().t);
+    checkpoints_before_last_snapshot = checkpoints;
+    if (s.state().t > 0.02) stop.store(true);
+  };
+  hooks.checkpoint = [&](const Solver&, const SurfaceSeries&) { ++checkpoints; };
+  Solver b = c.solver();
+  const RunResult stopped = run(b, c.empty_series(), schedule(0.05, 0.01, 0.025), hooks);
+  ASSERT_EQ(stopped.status, RunStatus::Interrupted);
+  EXPECT_EQ(snapshot_times, (std::vector<double>{0.0, 0.025, b.state().t}));
+  EXPECT_DOUBLE_EQ(b.state().t, 0.03);
+  EXPECT_EQ(checkpoints_before_last_snapshot, 1);
+
+  c.params.velocity_limit = 0.5;  // "runaway" in the first step
+  snapshot_times.clear();
+  RunHooks record;
+  record.snapshot = [&](const Solver& s) { snapshot_times.push_back(s.state().t); };
+  Solver d = c.solver();
+  const RunResult diverged = run(d, c.empty_series(), schedule(0.05, 0.01, 0.025), record);
+  ASSERT_EQ(diverged.status, RunStatus::Diverged);
+  ASSERT_FALSE(snapshot_times.empty());
+  EXPECT_EQ(snapshot_times.back(), d.state().t);
+}

@@ -80,6 +80,7 @@ void run_compare(const CompareOptions& o) {
   // Before any work (failure_policy.hpp): a path that cannot be written, or a sampling interval
   // that would fill memory, is a usage error, not a lost computation.
   require_writable(h5, "--out");
+  const auto claim = claim_output(h5, "--out");  // held until compare.h5 is written
   require_writable(png, "--plot");
   if (o.dt_out > 0.0) require_record_count("--dt-out", o.t_end, o.dt_out, kMaxSamples, "samples");
   const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);

@@ -15,6 +15,18 @@ void require_writable(const std::string& path, const std::string& option) {
   if (!why.empty()) throw UsageError(option + ": cannot write '" + path + "': " + why);
 }
 
+std::optional<OutputLock> claim_output(const std::string& path, const std::string& option) {
+  if (path.empty()) return std::nullopt;
+  try {
+    return std::optional<OutputLock>(std::in_place, path);
+  } catch (const OutputLock::LockHeld& e) {
+    throw UsageError(option + ": " + e.what() + " writing " + path +
+                     "; wait for it to finish or choose another " + option);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+}
+
 void require_record_count(const std::string& option, double t_end, double dt, long cap,
                           const std::string& records) {
   const double n = std::ceil(t_end / dt - 1e-9);

@@ -3,7 +3,10 @@
 // sampling intervals that would fill memory or disk; and the figure of a run that stopped early.
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include "common/output_lock.hpp"
 
 namespace granbench::cli {
 
@@ -14,6 +17,11 @@ inline constexpr long kMaxSnapshots = 1000;
 
 // UsageError "<option>: cannot write '<path>': <reason>" when `path` cannot be created.
 void require_writable(const std::string& path, const std::string& option);
+
+// The claim on `path` for this process's life (common/output_lock.hpp): UsageError naming
+// `option` and the lock file when another granbench process is writing the same output. An empty
+// path claims nothing.
+std::optional<OutputLock> claim_output(const std::string& path, const std::string& option);
 
 // UsageError naming `option` and its valid range when t_end / dt exceeds `cap` records.
 void require_record_count(const std::string& option, double t_end, double dt, long cap,

@@ -61,6 +61,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
 
   require_record_count("--dt-out", o.t_end, out.dt_out, kMaxSamples, "samples");
   if (!o.output.out.empty()) require_writable(o.output.out, "--out");
+  const auto claim = claim_output(o.output.out, "--out");  // held until the file is written
 
   const depthavg::Solver solver(base, curve, space, integ);
   const auto U0 = depthavg::initial_state(solver.rhs(), init, exact.lambda_hat);

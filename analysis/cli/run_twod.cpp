@@ -93,6 +93,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
     require_writable(replace_extension(files.out, ".xdmf"), "--out");
   }
   require_writable(files.checkpoint, "--checkpoint");
+  const auto claim = claim_output(files.out, "--out");  // held for the run
   if (restart) files.earlier_snapshots = restart->snapshot_times;
 
   // --- initial state: (7.2), or the least-stable surface mode of the exact 2D linear theory ---

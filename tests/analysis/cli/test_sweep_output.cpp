@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -94,6 +95,34 @@ TEST(SweepOutput, SigtermStopsASweepLikeCtrlCWithExit143) {
       "cd " + dir.string() + " && timeout --preserve-status -s TERM 3 ");
   EXPECT_EQ(r.code, 143) << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// A run (either model) and compare claim their --out too: a second process writing the same
+// file while the first runs is refused with exit 2 naming the lock (issue: "a second process
+// writing the same sweep (or run) output is refused").
+TEST(SweepOutput, ASecondRunOnTheSameOutIsRefusedNamingTheLock) {
+  const fs::path dir = temp_dir("run_lock");
+  const std::string out = (dir / "run.h5").string();
+  const std::string pidfile = (dir / "pid").string();
+  const std::string first =
+      std::string(GRANBENCH_BINARY_DIR) +
+      "/granbench run --model twod --nx 64 --nz 16 --t-end 60 --quiet --out " + out +
+      " >/dev/null 2>&1 & echo $! > " + pidfile;
+  ASSERT_EQ(std::system(first.c_str()), 0);
+  for (int i = 0; i < 100 && !fs::exists(out + ".lock"); ++i) usleep(100000);
+  ASSERT_TRUE(fs::exists(out + ".lock")) << "the first run took no lock";
+  for (const std::string model : {"twod", "depthavg"}) {
+    const auto r = run_granbench("run --model " + model + " --t-end 0.1 --quiet --out " + out,
+                                 "run_lock_" + std::to_string(getpid()));
+    EXPECT_EQ(r.code, 2) << model << ": " << r.err;
+    EXPECT_NE(r.err.find(out + ".lock"), std::string::npos) << r.err;
+  }
+  std::system(("kill -TERM $(cat " + pidfile + ") 2>/dev/null; sleep 1").c_str());
   fs::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/dispersion_twod.hpp"
 #include "analysis/cli/help_footer.hpp"
+#include "analysis/cli/output_checks.hpp"
 #include "analysis/theory/dispersion.hpp"
 #include "analysis/theory/dispersion_curve.hpp"
 #include "common/hdf5_file.hpp"
@@ -183,7 +184,10 @@ void add_dispersion_command(CLI::App& app) {
       ->check(positive())
       ->needs(flag)
       ->group(light);
-  sub->callback([opts] { run_dispersion(*opts); });
+  sub->callback([opts] {
+    require_writable_outputs(opts->output);  // before any work, with the OS's reason
+    run_dispersion(*opts);
+  });
 }
 
 }  // namespace granbench::cli

@@ -8,6 +8,7 @@
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/help_footer.hpp"
+#include "analysis/cli/output_checks.hpp"
 #include "analysis/theory/dispersion.hpp"
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
@@ -90,7 +91,10 @@ void add_steady_command(CLI::App& app) {
                           {0, 2}));
   add_flow_options(*sub, opts->flow);
   add_output_options(*sub, opts->output, /*with_plot=*/false);
-  sub->callback([opts] { run_steady(*opts); });
+  sub->callback([opts] {
+    require_writable_outputs(opts->output);  // before any work, with the OS's reason
+    run_steady(*opts);
+  });
 }
 
 }  // namespace granbench::cli

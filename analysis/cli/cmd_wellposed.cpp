@@ -11,6 +11,7 @@
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/help_footer.hpp"
+#include "analysis/cli/output_checks.hpp"
 #include "analysis/theory/wellposedness_figures.hpp"
 
 namespace granbench::cli {
@@ -115,7 +116,10 @@ void add_wellposed_command(CLI::App& app) {
                           {0, 2}));
   add_flow_options(*sub, opts->flow, /*add_slope=*/false);
   add_output_options(*sub, opts->output);
-  sub->callback([opts] { run_wellposed(*opts); });
+  sub->callback([opts] {
+    require_writable_outputs(opts->output);  // before any work, with the OS's reason
+    run_wellposed(*opts);
+  });
 }
 
 }  // namespace granbench::cli

@@ -15,6 +15,11 @@ void require_writable(const std::string& path, const std::string& option) {
   if (!why.empty()) throw UsageError(option + ": cannot write '" + path + "': " + why);
 }
 
+void require_writable_outputs(const OutputOptions& o) {
+  if (!o.out.empty()) require_writable(o.out, "--out");
+  if (!o.plot.empty()) require_writable(o.plot, "--plot");
+}
+
 std::optional<OutputLock> claim_output(const std::string& path, const std::string& option) {
   if (path.empty()) return std::nullopt;
   try {

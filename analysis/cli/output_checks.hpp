@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "analysis/cli/cli_common.hpp"
 #include "common/output_lock.hpp"
 
 namespace granbench::cli {
@@ -17,6 +18,9 @@ inline constexpr long kMaxSnapshots = 1000;
 
 // UsageError "<option>: cannot write '<path>': <reason>" when `path` cannot be created.
 void require_writable(const std::string& path, const std::string& option);
+
+// require_writable for --out and --plot of a command that writes nothing else, when given.
+void require_writable_outputs(const OutputOptions& o);
 
 // The claim on `path` for this process's life (common/output_lock.hpp): UsageError naming
 // `option` and the lock file when another granbench process is writing the same output. An empty

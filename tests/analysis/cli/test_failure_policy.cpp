@@ -65,7 +65,10 @@ TEST(FailurePolicy, OutputPathsAreCheckedBeforeAnyWork) {
   // Each would compute for minutes before writing: the refusal must come first.
   for (const std::string& cmd :
        {kTwod + "--t-end 600", kDepthavg + "--t-end 600", kCompare + "--t-end 600",
-        std::string("sweep --nx 16 --t-end 600 --Lx 0.08:0.08:1 --quiet")}) {
+        std::string("sweep --nx 16 --t-end 600 --Lx 0.08:0.08:1 --quiet"),
+        // quick ones too: one failure policy for every command (before, exit 1 from HDF5)
+        std::string("steady"), std::string("wellposed"), std::string("dispersion --Lx 0.08"),
+        std::string("dispersion --theory twod --Lx 0.08")}) {
     const auto r = run_granbench(cmd + " --out /nonexistent-granbench-dir/x.h5", "fp_out");
     EXPECT_EQ(r.code, 2) << cmd << ": " << r.err;
     EXPECT_NE(r.err.find("--out: cannot write '/nonexistent-granbench-dir/x.h5': No such file or "

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <iostream>
 #include <limits>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 #include <thread>
 
@@ -112,19 +112,25 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
 }
 
 LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
-                               const std::atomic<bool>* stop, bool progress) {
+                               const std::atomic<bool>* stop, const LayerCaseProgress& progress) {
   LayerCaseResult out;
   out.runs.resize(spec.runs.size());
   std::vector<double> t_now(spec.runs.size(), 0.0);
+  std::vector<double> cost(spec.runs.size());
+  for (std::size_t i = 0; i < spec.runs.size(); ++i)
+    cost[i] = std::pow(double(spec.runs[i].nx) * spec.runs[i].nz, 1.5) * spec.runs[i].t_end;
+  const double total_cost = std::accumulate(cost.begin(), cost.end(), 0.0);
   std::mutex mutex;
   std::size_t next = 0;
   auto show = [&] {  // one status line for all runs (called under the mutex)
     std::ostringstream line;
-    line << "\r ";
-    for (std::size_t i = 0; i < spec.runs.size(); ++i)
+    double done = 0.0;
+    for (std::size_t i = 0; i < spec.runs.size(); ++i) {
       line << " " << spec.runs[i].label << " " << std::fixed << std::setprecision(3) << t_now[i];
-    line << " / " << spec.runs.front().t_end << " s   ";
-    std::cerr << line.str() << std::flush;
+      done += cost[i] * t_now[i] / spec.runs[i].t_end;
+    }
+    line << " / " << spec.runs.front().t_end << " s";
+    progress(line.str(), done / total_cost);
   };
   const unsigned workers = std::max(1u, std::min<unsigned>(jobs, spec.runs.size()));
   auto worker = [&] {
@@ -154,7 +160,6 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
   std::vector<std::thread> pool;
   for (unsigned w = 0; w < workers; ++w) pool.emplace_back(worker);
   for (auto& th : pool) th.join();
-  if (progress) std::cerr << "\n";
 
   // Grid dependence: each curve's coarsest run against each finer one.
   nlohmann::json gd = nlohmann::json::object();

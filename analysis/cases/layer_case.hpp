@@ -14,6 +14,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -41,9 +42,15 @@ struct LayerCaseResult {
   nlohmann::json summary;
 };
 
+// What the case tells its caller after every sample of any run: one status line (each run's label
+// and simulated time) and the fraction of the work done, each run weighted by its cost
+// (cells^(3/2): the cells times the steps, which grow with the finer spacing), for an ETA.
+using LayerCaseProgress = std::function<void(const std::string& status, double fraction_done)>;
+
 // Runs every layer run (up to `jobs` at once); a stop request ends them all at their next sample.
 LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
-                               const std::atomic<bool>* stop, bool progress);
+                               const std::atomic<bool>* stop,
+                               const LayerCaseProgress& progress = {});
 
 void write_layer_case(const std::string& path, const LayerCaseSpec& spec, const LayerCaseResult& r);
 

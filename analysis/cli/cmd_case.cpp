@@ -13,6 +13,7 @@
 // curves. Every case writes <out-dir>/<name>*.h5 and draws its figures as <out-dir>/<name>_*.png
 // with the scripts in analysis/plots.
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -52,8 +53,16 @@ nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o,
   const std::string h5 = path_in(o, spec.name + ".h5");
   require_writable(h5, "--out-dir");
   const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
-  const cases::LayerCaseResult result =
-      cases::run_layer_case(spec, o.jobs, guard.flag(), progress_enabled(o.output));
+  cases::LayerCaseProgress progress;
+  if (progress_enabled(o.output))
+    progress = [wall0 = std::chrono::steady_clock::now()](const std::string& status, double done) {
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+      std::cerr << "\r " << status << ", " << eta_text(wall, 0.0, done, 1.0) << "    "
+                << std::flush;
+    };
+  const cases::LayerCaseResult result = cases::run_layer_case(spec, o.jobs, guard.flag(), progress);
+  if (progress) std::cerr << "\n";
   cases::write_layer_case(h5, spec, result);
   for (const auto& r : result.runs)
     if (r.status == "interrupted") exit_code = guard.exit_code();

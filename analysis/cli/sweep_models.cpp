@@ -69,11 +69,16 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
   const bool show = s.root && progress_enabled(output);
   SweepProgress progress;
   progress.stop = guard.flag();
-  progress.point_done = [&](const SweepPoint& p, std::size_t done, std::size_t total) {
+  // The ETA assumes the points left cost what the finished ones did on average.
+  progress.point_done = [&, wall0 = std::chrono::steady_clock::now()](
+                            const SweepPoint& p, std::size_t done, std::size_t total) {
     if (!show) return;
     std::lock_guard lock(io);
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     std::cerr << "  [" << done << "/" << total << "] " << p.model << " Lx = " << p.Lx
-              << " m: growth " << p.growth_rate << " 1/s (" << p.wall_seconds << " s)\n";
+              << " m: growth " << p.growth_rate << " 1/s (" << p.wall_seconds << " s), "
+              << eta_text(wall, 0.0, double(done), double(total)) << "\n";
   };
   auto ran = run_share(spec, finished, progress);
   if (s.ranks > 1) ran = unpack_points(mpi.gather(pack_points(ran)));

@@ -2,12 +2,14 @@
 // measure against exact answers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
 #include "analysis/cases/case_file.hpp"
 #include "analysis/cases/grid_dependence.hpp"
+#include "analysis/cases/layer_case.hpp"
 
 namespace granbench::cases {
 namespace {
@@ -36,6 +38,37 @@ TEST(CaseFile, ResolutionTablesOverrideTopLevelKeys) {
   const auto smoke = f.table("run", "smoke");
   EXPECT_EQ(smoke.at("nx"), std::vector<std::string>{"32"});
   EXPECT_EQ(smoke.at("t-end"), std::vector<std::string>{"0.2"});
+}
+
+// The progress of a layer case: a status line naming every run, and a fraction of the work done
+// that only grows and ends at 1 (the ETA of `granbench case` is computed from it).
+TEST(LayerCase, ProgressFractionGrowsToOne) {
+  const CaseFile f = read_case_file(write_file(
+      "gb_case_progress.toml",
+      "kind = \"decelerating\"\nname = \"p\"\ncurves = [\"jop\"]\nangle0 = 24.0\nangle = 10.0\n"
+      "h0 = 0.004\nLx_over_h0 = 2.0\nLz_over_h0 = 1.5\nt_end = 0.004\nsamples = 3\n"
+      "nx = [8, 16]\nnz = [6, 12]\n"));
+  const LayerCaseSpec spec = layer_case_spec(f, "paper");
+  std::vector<double> fractions;
+  std::string last_status;
+  const LayerCaseResult r =
+      run_layer_case(spec, 1, nullptr, [&](const std::string& status, double done) {
+        fractions.push_back(done);
+        last_status = status;
+      });
+  ASSERT_EQ(r.runs.size(), 2u);
+  ASSERT_GE(fractions.size(), 6u);  // three samples of each run
+  for (std::size_t i = 1; i < fractions.size(); ++i) EXPECT_GE(fractions[i], fractions[i - 1]);
+  EXPECT_DOUBLE_EQ(fractions.front(), 0.0);  // the first sample is the initial state
+  EXPECT_NEAR(fractions.back(), 1.0, 1e-12);
+  // The fine run costs (2 * 2)^(3/2) = 8 times the coarse one: 1/9 of the work is done when the
+  // coarse run ends (runs go in order on one worker).
+  EXPECT_NE(last_status.find(spec.runs[0].label), std::string::npos);
+  EXPECT_NE(last_status.find(spec.runs[1].label), std::string::npos);
+  const auto coarse_end = std::find_if(fractions.begin(), fractions.end(),
+                                       [](double x) { return x > 1.0 / 9.0 + 1e-12; });
+  ASSERT_NE(coarse_end, fractions.begin());
+  EXPECT_NEAR(*(coarse_end - 1), 1.0 / 9.0, 1e-12);
 }
 
 TEST(CaseFile, ErrorsNameTheKeyAndTheRange) {

@@ -7,7 +7,7 @@
 #   depthavg, twod                              common
 #   analysis/{theory,spectral,linear2d}         common, each other
 #   analysis/comparison                         the above, depthavg, twod
-#   analysis/cases                              common, twod, analysis/{theory,spectral,linear2d}
+#   analysis/cases                              the above and analysis/comparison
 #   analysis/cli                                everything but tests and bench
 cmake_policy(VERSION 3.25)  # also when run alone with -P
 if(NOT GRANBENCH_SOURCE_DIR)
@@ -21,7 +21,7 @@ set(allowed_analysis/theory "common;${theories}")
 set(allowed_analysis/spectral "common;${theories}")
 set(allowed_analysis/linear2d "common;${theories}")
 set(allowed_analysis/comparison "common;depthavg;twod;${theories};analysis/comparison")
-set(allowed_analysis/cases "common;twod;${theories};analysis/cases")
+set(allowed_analysis/cases "common;depthavg;twod;${theories};analysis/comparison;analysis/cases")
 set(allowed_analysis/cli "common;depthavg;twod;${theories};analysis/comparison;analysis/cases;analysis/cli")
 
 # Written into the build tree at build time (common/CMakeLists.txt), so not under a folder here.

@@ -162,19 +162,7 @@ void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& 
   out.attribute("/", "curve", curve);
   if (!std::isnan(angle_deg)) out.attribute("/", "angle_deg", angle_deg);
   if (!std::isnan(h0)) out.attribute("/", "h0", h0);
-  for (const auto& [key, v] : {std::pair{"mu_s", m.mu_s},
-                               {"mu_d", m.mu_d},
-                               {"I0", m.I0},
-                               {"d", m.d},
-                               {"phi", m.phi},
-                               {"rho_star", m.rho_star},
-                               {"g", m.g},
-                               {"mu_inf", m.mu_inf},
-                               {"alpha", m.alpha},
-                               {"kk_mu0", m.kk_mu0},
-                               {"kk_cK", m.kk_cK},
-                               {"hm_c", m.hm_c}})
-    out.attribute("/", key, v);
+  for (const MaterialConstant& c : material_constants) out.attribute("/", c.key, m.*c.value);
 }
 
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,

@@ -5,6 +5,8 @@
 // the command line or a case file; nothing in granbench reads a constant from anywhere else.
 #pragma once
 
+#include <array>
+
 namespace granbench {
 
 struct Material {
@@ -27,5 +29,31 @@ struct Material {
 
   double bulk_density() const { return rho_star * phi; }  // rho_* phi, the density in (2.10)
 };
+
+// Every constant of Material by name: its key in HDF5 attributes, JSON and stored sweep settings,
+// and the command-line option that sets it. Outputs, the stored settings and the reproducing
+// command lines iterate over this one list, so none of them can miss a constant.
+struct MaterialConstant {
+  const char* key;
+  const char* option;
+  double Material::*value;
+};
+inline constexpr std::array<MaterialConstant, 12> material_constants{{
+    {"mu_s", "--mu-s", &Material::mu_s},
+    {"mu_d", "--mu-d", &Material::mu_d},
+    {"I0", "--I0", &Material::I0},
+    {"d", "--d", &Material::d},
+    {"phi", "--phi", &Material::phi},
+    {"rho_star", "--rho-star", &Material::rho_star},
+    {"g", "--g", &Material::g},
+    {"mu_inf", "--mu-inf", &Material::mu_inf},
+    {"alpha", "--alpha", &Material::alpha},
+    {"kk_mu0", "--kk-mu0", &Material::kk_mu0},
+    {"kk_cK", "--kk-cK", &Material::kk_cK},
+    {"hm_c", "--hm-c", &Material::hm_c},
+}};
+// A constant added to Material without an entry above fails here.
+static_assert(sizeof(Material) == material_constants.size() * sizeof(double),
+              "every Material constant needs an entry in material_constants");
 
 }  // namespace granbench

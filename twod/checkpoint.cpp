@@ -18,27 +18,18 @@ namespace granbench::twod {
 std::vector<std::pair<std::string, double>> checkpoint_physics(const SolverParams& p) {
   const Rheology& r = p.rheology;
   const Material& m = r.material;
-  return {{"angle", p.zeta * 180.0 / std::numbers::pi},
-          {"curve", double(static_cast<int>(r.curve))},
-          {"h0", r.h0_for_curve},
-          {"mu-s", m.mu_s},
-          {"mu-d", m.mu_d},
-          {"I0", m.I0},
-          {"d", m.d},
-          {"phi", m.phi},
-          {"rho-star", m.rho_star},
-          {"g", m.g},
-          {"mu-inf", m.mu_inf},
-          {"alpha", m.alpha},
-          {"kk-mu0", m.kk_mu0},
-          {"kk-cK", m.kk_cK},
-          {"hm-c", m.hm_c},
-          {"eta-max", r.eta_max},
-          {"eta-min", r.eta_min},
-          {"D-min", r.D_min},
-          {"rho-light", r.rho_light},
-          {"eta-light", r.eta_light},
-          {"mixing", double(static_cast<int>(r.mixing))}};
+  // Keyed by the option names (without "--"), so that a mismatch names the option to change.
+  std::vector<std::pair<std::string, double>> v = {{"angle", p.zeta * 180.0 / std::numbers::pi},
+                                                   {"curve", double(static_cast<int>(r.curve))},
+                                                   {"h0", r.h0_for_curve}};
+  for (const MaterialConstant& c : material_constants) v.emplace_back(c.option + 2, m.*c.value);
+  v.insert(v.end(), {{"eta-max", r.eta_max},
+                     {"eta-min", r.eta_min},
+                     {"D-min", r.D_min},
+                     {"rho-light", r.rho_light},
+                     {"eta-light", r.eta_light},
+                     {"mixing", double(static_cast<int>(r.mixing))}});
+  return v;
 }
 
 void resume_from(Solver& solver, const Checkpoint& c) {

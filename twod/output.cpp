@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "twod/diagnostics.hpp"
+#include "twod/viscosity_mixing.hpp"
 
 namespace granbench::twod {
 
@@ -37,22 +38,13 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("Lz", g.Lz);
   a("angle_deg", p.zeta * 180.0 / std::numbers::pi);
   out.attribute(group, "curve", std::string(curve_name(r.curve)));
-  a("mu_s", m.mu_s);
-  a("mu_d", m.mu_d);
-  a("I0", m.I0);
-  a("d", m.d);
-  a("phi", m.phi);
-  a("rho_star", m.rho_star);
-  a("g", m.g);
-  a("mu_inf", m.mu_inf);
-  a("alpha", m.alpha);
+  for (const MaterialConstant& c : material_constants) a(c.key, m.*c.value);
   a("eta_max", r.eta_max);
   a("eta_min", r.eta_min);
   a("D_min", r.D_min);
   a("rho_light", r.rho_light);
   a("eta_light", r.eta_light);
-  out.attribute(group, "viscosity_mixing",
-                std::string(r.mixing == ViscosityMixing::Harmonic ? "harmonic" : "arithmetic"));
+  out.attribute(group, "viscosity_mixing", std::string(viscosity_mixing_name(r.mixing)));
   a("cfl", p.cfl);
   a("dt_max", p.dt_max);
   a("solver_tolerance", p.solver_tolerance);

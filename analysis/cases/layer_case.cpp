@@ -12,8 +12,10 @@
 #include <thread>
 
 #include "analysis/cases/layer_xdmf.hpp"
+#include "analysis/comparison/twod_settings.hpp"
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
+#include "twod/viscosity_mixing.hpp"
 
 namespace granbench::cases {
 
@@ -24,8 +26,7 @@ constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 twod::ViscosityMixing parse_mixing(const CaseFile& f, const std::string& res) {
   if (!f.has("mixing", res)) return twod::ViscosityMixing::Arithmetic;
   const std::string m = f.text("mixing", res);
-  if (m == "arithmetic") return twod::ViscosityMixing::Arithmetic;
-  if (m == "harmonic") return twod::ViscosityMixing::Harmonic;
+  if (const auto rule = twod::viscosity_mixing_from_name(m)) return *rule;
   throw CaseFileError(f.path() + ": key 'mixing' = '" + m +
                       "'; valid values {arithmetic,harmonic}");
 }
@@ -71,22 +72,25 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
   const double t_end = f.number_in("t_end", res, 1e-6, 1e4);
   const int samples = int(f.number_in("samples", res, 2, 1000));
 
-  twod::SolverParams p;
-  p.zeta = degrees_to_radians(s.angle_deg);
-  if (f.has("eta_max", res)) p.rheology.eta_max = f.number_in("eta_max", res, 1e-6, 1e12);
-  if (f.has("eta_min", res)) p.rheology.eta_min = f.number_in("eta_min", res, 1e-9, 1e6);
-  if (f.has("D_min", res)) p.rheology.D_min = f.number_in("D_min", res, 1e-15, 1.0);
-  if (f.has("dt_max", res)) p.dt_max = f.number_in("dt_max", res, 1e-9, 1.0);
-  if (f.has("cfl", res)) p.cfl = f.number_in("cfl", res, 1e-3, 0.499);
-  p.rheology.mixing = parse_mixing(f, res);
-  p.rheology.h0_for_curve = s.h0;
+  // The solver settings of the case file (the 2D settings of every command, twod_settings.hpp).
+  TwodSettings settings;
+  if (f.has("eta_max", res)) settings.eta_max = f.number_in("eta_max", res, 1e-6, 1e12);
+  if (f.has("eta_min", res)) settings.eta_min = f.number_in("eta_min", res, 1e-9, 1e6);
+  if (f.has("D_min", res)) settings.D_min = f.number_in("D_min", res, 1e-15, 1.0);
+  if (f.has("dt_max", res)) settings.dt_max = f.number_in("dt_max", res, 1e-9, 1.0);
+  if (f.has("cfl", res)) settings.cfl = f.number_in("cfl", res, 1e-3, 0.499);
+  settings.mixing = parse_mixing(f, res);
+  ChuteCase chute;  // the run's flow: the curve is set per run below
+  chute.angle_deg = s.angle_deg;
+  chute.h0 = s.h0;
+  chute.Lx = Lx;
   for (const auto& curve : s.curves) {
     for (std::size_t r = 0; r < nx.size(); ++r) {
       if (nx[r] < 4 || nz[r] < 4 || nx[r] != std::floor(nx[r]) || nz[r] != std::floor(nz[r]))
         throw CaseFileError(f.path() + ": 'nx' and 'nz' entries must be integers >= 4");
       LayerRunSpec run;
-      run.params = p;
-      run.params.rheology.curve = curve_of(f, "curves", curve);
+      chute.curve = curve_of(f, "curves", curve);
+      run.params = twod_solver_params(chute, settings);
       run.initial_curve = f.has("initial_curve", res)
                               ? curve_of(f, "initial_curve", f.text("initial_curve", res))
                               : run.params.rheology.curve;
@@ -100,7 +104,7 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
       run.label = curve + "_" + std::to_string(run.nx) + "x" + std::to_string(run.nz);
       // The initial state must exist: a steady Bagnold flow of the initial curve at angle0.
       try {
-        steady_state(MuCurve(run.initial_curve, p.rheology.material, s.h0), run.initial_zeta, s.h0);
+        steady_state(MuCurve(run.initial_curve, chute.material, s.h0), run.initial_zeta, s.h0);
       } catch (const std::exception& e) {
         throw CaseFileError(f.path() + ": key 'angle0': no steady flow of the initial curve (" +
                             e.what() + ")");
@@ -279,10 +283,7 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
     out.attribute(g, "eta_max", s.params.rheology.eta_max);
     out.attribute(g, "eta_min", s.params.rheology.eta_min);
     out.attribute(g, "D_min", s.params.rheology.D_min);
-    out.attribute(
-        g, "mixing",
-        std::string(s.params.rheology.mixing == twod::ViscosityMixing::Harmonic ? "harmonic"
-                                                                                : "arithmetic"));
+    out.attribute(g, "mixing", std::string(twod::viscosity_mixing_name(s.params.rheology.mixing)));
   }
   for (std::size_t n = 0; n < r.grid_dependence.size(); ++n) {
     const auto& [curve, d] = r.grid_dependence[n];

@@ -198,6 +198,16 @@ void run_plot_script(const std::string& script, const std::string& h5, const std
                              "); needs python3-matplotlib, python3-h5py");
 }
 
+ChuteCase FlowOptions::chute(double Lx) const {
+  ChuteCase c;
+  c.material = material;
+  c.curve = curve_kind();
+  c.angle_deg = angle_deg;
+  c.h0 = h0;
+  c.Lx = Lx;
+  return c;
+}
+
 bool progress_enabled(const OutputOptions& o) {
   return !o.quiet && isatty(STDERR_FILENO);
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "analysis/comparison/chute_case.hpp"
 #include "common/material.hpp"
 #include "common/mu_curves.hpp"
 #include "common/steady_state.hpp"
@@ -35,6 +36,9 @@ struct FlowOptions {
   MuCurve make_curve() const;
   // The steady state of these options; a slope with no steady flow is a UsageError on --angle.
   SteadyState steady() const;
+  // The chute case of this flow on a domain of length Lx [m] (the seed and run length at their
+  // defaults); `run`, `compare` and `sweep` start from it.
+  ChuteCase chute(double Lx) const;
 };
 // add_slope=false for subcommands with no slope (wellposed).
 void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope = true);

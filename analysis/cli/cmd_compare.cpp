@@ -15,6 +15,7 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/compare_options.hpp"
 #include "analysis/cli/compare_report.hpp"
 #include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
@@ -28,29 +29,8 @@ namespace granbench::cli {
 
 namespace {
 
-struct CompareOptions {
-  FlowOptions flow;
-  OutputOptions output;
-  double Lx = 0.08;
-  double a0 = 2e-5;
-  bool paper = false;
-  std::string init = "eigenmode";
-  double t_end = 2.0;
-  double dt_out = 0.0;
-  std::string resolution = "default";
-  int nx = 0, nz = 0;                  // 2D grid; 0: from --resolution
-  std::size_t nx_depthavg = 0;         // 0: from --resolution
-  std::string frame_speed = "linear";  // depth-averaged frame: linear (co-moving) or 0 (lab)
-  int viscosity_passes = 1;
-};
-
 void run_compare(const CompareOptions& o) {
-  ChuteCase chute;
-  chute.material = o.flow.material;
-  chute.curve = o.flow.curve_kind();
-  chute.angle_deg = o.flow.angle_deg;
-  chute.h0 = o.flow.h0;
-  chute.Lx = o.Lx;
+  ChuteCase chute = o.flow.chute(o.Lx);
   chute.a0 = o.paper ? 2e-4 : o.a0;
   chute.seed = (o.paper || o.init == "sine") ? Seed::Sine : Seed::Eigenmode;
   chute.t_end = o.t_end;
@@ -127,36 +107,12 @@ void run_compare(const CompareOptions& o) {
            c.depthavg.outcome == RunOutcome::Completed && c.twod.outcome == RunOutcome::Completed);
 
   if (o.output.json) {
-    print_json({{"Lx", chute.Lx},
-                {"k_hat", c.theory.k_hat},
-                {"exact",
-                 {{"growth_rate", c.theory.exact.growth_rate},
-                  {"phase_speed", c.theory.exact.phase_speed}}},
-                {"exact_bagnold",
-                 {{"growth_rate", c.theory.exact_bagnold.growth_rate},
-                  {"phase_speed", c.theory.exact_bagnold.phase_speed}}},
-                {"exact_2d",
-                 {{"growth_rate", c.theory.exact_2d.growth_rate},
-                  {"phase_speed", c.theory.exact_2d.phase_speed},
-                  {"convergence", c.theory.exact_2d_convergence}}},
-                {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
-                {"twod", model_json(c.twod, c.twod_measured)},
-                {"twod_viscosity_passes", twod.viscosity_passes},
-                {"warnings", warnings},
-                {"out", h5},
-                {"plot", png}});
+    print_json(compare_json(c, twod.viscosity_passes, warnings, h5, png));
   } else {
     print_table(c);
     std::cout << "  wrote " << h5 << " and " << png << "\n";
   }
-  for (const ModelRun* r : {&c.depthavg, &c.twod}) {
-    if (r->outcome == RunOutcome::Interrupted)
-      throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
-    if (r->outcome == RunOutcome::Diverged || r->outcome == RunOutcome::Failed)
-      throw CommandFailed(r->model + " " + run_status_name(r->outcome) + ": " + r->message +
-                              "; data up to then in " + h5,
-                          kExitRunFailed);
-  }
+  throw_unless_both_completed(c, guard, h5);
 }
 
 }  // namespace
@@ -172,43 +128,7 @@ void add_compare_command(CLI::App& app) {
       {"granbench compare --Lx 0.08", "granbench compare --Lx 0.04 --resolution coarse --json",
        "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5"},
       {0, 2, 3, 130, 143}));
-  sub->add_option("--Lx", o->Lx, "domain length = wavelength [m], > 0")
-      ->check(positive())
-      ->capture_default_str();
-  sub->add_option("--a0", o->a0, "initial amplitude of h [m], in (0, h0)")
-      ->check(positive())
-      ->capture_default_str();
-  sub->add_flag("--paper", o->paper, "the paper's start: sine (7.2) with a0 = 0.2 mm");
-  sub->add_option("--init", o->init, "initial perturbation {eigenmode,sine}")
-      ->check(one_of({"eigenmode", "sine"}))
-      ->capture_default_str();
-  sub->add_option("--t-end", o->t_end, "simulated time [s], > 0")
-      ->check(positive())
-      ->capture_default_str();
-  sub->add_option("--dt-out", o->dt_out, "sampling interval [s], > 0 (default: automatic)")
-      ->check(positive());
-  sub->add_option("--resolution", o->resolution,
-                  "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
-      ->check(one_of({"coarse", "default", "fine"}))
-      ->capture_default_str();
-  // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
-  sub->add_option("--nx", o->nx, "2D cells along x (overrides --resolution), in [8, 65536]")
-      ->check(CLI::Range(8, 65536));
-  sub->add_option("--nz", o->nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), in [4, 4096]")
-      ->check(CLI::Range(4, 4096));
-  sub->add_option("--nx-depthavg", o->nx_depthavg,
-                  "depth-averaged cells (overrides --resolution), in [8, 1048576]")
-      ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20));
-  sub->add_option("--frame-speed", o->frame_speed,
-                  "depth-averaged model's frame {linear,0}: moving at the (7.11) phase speed, or "
-                  "the lab frame; output is in the lab frame")
-      ->check(one_of({"linear", "0"}))
-      ->capture_default_str();
-  sub->add_option("--viscosity-passes", o->viscosity_passes,
-                  "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
-                  "(1 is second order in time already; more passes cost n times as much)")
-      ->check(CLI::Range(1, 4))
-      ->capture_default_str();
+  add_compare_options(*sub, *o);
   sub->callback([o] { run_compare(*o); });
 }
 

@@ -10,6 +10,8 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/dispersion_options.hpp"
+#include "analysis/cli/dispersion_output.hpp"
 #include "analysis/cli/dispersion_twod.hpp"
 #include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
@@ -22,63 +24,6 @@
 namespace granbench::cli {
 
 namespace {
-
-enum class Theory { DepthAvg, DepthAvgBagnold, TwoD };
-
-struct DispersionOptions {
-  FlowOptions flow;
-  OutputOptions output;
-  std::vector<double> Lx;
-  std::string theory = "depthavg";
-  int resolution = 32;  // Chebyshev intervals of --theory twod
-  // --light-layer: the 2D solver's light fluid above the grains, defaults from the solver.
-  bool light_layer = false;
-  double rho_light = twod::Rheology{}.rho_light;
-  double eta_light = twod::Rheology{}.eta_light;
-  double Lz = 0.0;  // [m]; 0: 2 h0, the solver's default
-};
-
-// The light layer of the options, validated (one-line errors naming the option).
-std::optional<linear2d::LightLayer> light_layer(const DispersionOptions& o, Theory theory) {
-  if (!o.light_layer) return std::nullopt;
-  if (theory != Theory::TwoD) throw UsageError("--light-layer: only with --theory twod");
-  const double Lz = o.Lz > 0.0 ? o.Lz : 2.0 * o.flow.h0;
-  if (!(Lz > o.flow.h0))
-    throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0, inf)");
-  return linear2d::LightLayer{o.rho_light, o.eta_light, Lz / o.flow.h0};
-}
-
-Theory parse_theory(const std::string& t) {
-  if (t == "depthavg") return Theory::DepthAvg;
-  if (t == "depthavg-bagnold") return Theory::DepthAvgBagnold;
-  return Theory::TwoD;
-}
-
-void write_dispersion_data(const std::string& path, const SteadyState& s, double chi,
-                           const std::vector<DispersionMode>& modes, const std::string& curve) {
-  // The curve over k_hat (log grid) and the chosen points, dimensional and non-dimensional.
-  const DispersionParams p = DispersionParams::from(s, chi);
-  std::vector<double> pk, pg, pc, pL;
-  for (const auto& m : modes) {
-    pk.push_back(m.k_hat);
-    pg.push_back(m.growth_rate);
-    pc.push_back(m.phase_speed);
-    pL.push_back(m.Lx);
-  }
-  H5Writer out(path);
-  write_dispersion_curve(out, "curve", s, chi, 1e-3, 10.0, 400);
-  out.write("points/k_hat", pk);
-  out.write("points/growth_rate", pg);
-  out.write("points/phase_speed", pc);
-  out.write("points/Lx", pL);
-  out.attribute("/", "chi", chi);
-  out.attribute("/", "F", p.F);
-  out.attribute("/", "R", p.R);
-  out.attribute("/", "Gamma", p.Gamma);
-  out.attribute("/", "u_mean", s.u_mean);
-  write_flow_inputs(out, curve, s.material, s.zeta * 180.0 / std::numbers::pi, s.h0);
-  out.close();
-}
 
 void run_dispersion(const DispersionOptions& o) {
   const SteadyState s = o.flow.steady();
@@ -153,37 +98,7 @@ void add_dispersion_command(CLI::App& app) {
   sub->footer(help_footer({"granbench dispersion --Lx 0.04 --Lx 0.08 --json",
                            "granbench dispersion --theory twod --Lx 0.08 --out dispersion.h5"},
                           {0, 2}));
-  add_flow_options(*sub, opts->flow);
-  add_output_options(*sub, opts->output);
-  sub->add_option("--Lx", opts->Lx, "domain length(s) = wavelength(s) [m], > 0")
-      ->required()
-      ->check(positive());
-  sub->add_option("--theory", opts->theory, "linear theory {depthavg,depthavg-bagnold,twod}")
-      ->check(one_of({"depthavg", "depthavg-bagnold", "twod"}))
-      ->capture_default_str();
-  sub->add_option("--chebyshev", opts->resolution,
-                  "Chebyshev intervals for --theory twod, in [8, 160] (check at 3N/2)")
-      ->capture_default_str();
-  const std::string light = "Light layer (--theory twod --light-layer)";
-  auto* flag = sub->add_flag("--light-layer", opts->light_layer,
-                             "--theory twod: also the grains under the 2D solver's light fluid "
-                             "(density --rho-light, viscosity --eta-light, top at --Lz: p = 0, "
-                             "du/dz = 0)")
-                   ->group(light);
-  sub->add_option("--rho-light", opts->rho_light, "light-fluid density [kg/m^3], > 0")
-      ->check(positive())
-      ->needs(flag)
-      ->group(light)
-      ->capture_default_str();
-  sub->add_option("--eta-light", opts->eta_light, "light-fluid viscosity [Pa s], > 0")
-      ->check(positive())
-      ->needs(flag)
-      ->group(light)
-      ->capture_default_str();
-  sub->add_option("--Lz", opts->Lz, "domain height [m], > h0; default 2 h0")
-      ->check(positive())
-      ->needs(flag)
-      ->group(light);
+  add_dispersion_options(*sub, *opts);
   sub->callback([opts] {
     require_writable_outputs(opts->output);  // before any work, with the OS's reason
     run_dispersion(*opts);

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/commands.hpp"
 #include "analysis/spectral/measurement.hpp"
 
 namespace granbench::cli {
@@ -98,6 +99,41 @@ void print_table(const Comparison& c) {
             << " steps), 2D mass error " << std::scientific << std::setprecision(1)
             << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3) << c.twod.I_min
             << ", " << c.twod.I_max << "], ill-posed fraction " << c.twod.illposed_fraction << "\n";
+}
+
+nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
+                            const std::vector<std::string>& warnings, const std::string& h5,
+                            const std::string& png) {
+  return nlohmann::json(
+      {{"Lx", c.chute.Lx},
+       {"k_hat", c.theory.k_hat},
+       {"exact",
+        {{"growth_rate", c.theory.exact.growth_rate}, {"phase_speed", c.theory.exact.phase_speed}}},
+       {"exact_bagnold",
+        {{"growth_rate", c.theory.exact_bagnold.growth_rate},
+         {"phase_speed", c.theory.exact_bagnold.phase_speed}}},
+       {"exact_2d",
+        {{"growth_rate", c.theory.exact_2d.growth_rate},
+         {"phase_speed", c.theory.exact_2d.phase_speed},
+         {"convergence", c.theory.exact_2d_convergence}}},
+       {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
+       {"twod", model_json(c.twod, c.twod_measured)},
+       {"twod_viscosity_passes", viscosity_passes},
+       {"warnings", warnings},
+       {"out", h5},
+       {"plot", png}});
+}
+
+void throw_unless_both_completed(const Comparison& c, const InterruptGuard& guard,
+                                 const std::string& h5) {
+  for (const ModelRun* r : {&c.depthavg, &c.twod}) {
+    if (r->outcome == RunOutcome::Interrupted)
+      throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
+    if (r->outcome == RunOutcome::Diverged || r->outcome == RunOutcome::Failed)
+      throw CommandFailed(r->model + " " + run_status_name(r->outcome) + ": " + r->message +
+                              "; data up to then in " + h5,
+                          kExitRunFailed);
+  }
 }
 
 }  // namespace granbench::cli

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/cli/cli_common.hpp"
+#include "common/hdf5_file.hpp"
 
 namespace granbench::cli {
 
@@ -54,6 +55,50 @@ void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Meas
                     << " mm)\n";
     }
   }
+}
+
+void write_depthavg_run(const RunOptions& o, const DepthAvgOptions& mo,
+                        const depthavg::SpaceParams& space, const SteadyState& base,
+                        const depthavg::RunResult& r, const nlohmann::json& j) {
+  H5Writer h5(o.output.out);
+  write_surface_series(h5, "surface", r.series);
+  const std::vector<std::pair<std::string, double>> numbers = {
+      {"angle_deg", o.flow.angle_deg},
+      {"h0", o.flow.h0},
+      {"Lx", o.Lx},
+      {"nx", static_cast<double>(o.nx)},
+      {"a0", o.a0},
+      {"mode", static_cast<double>(o.mode)},
+      {"noise", o.noise},
+      {"seed", static_cast<double>(o.seed)},
+      {"t_end", o.t_end},
+      {"dt_out", j.at("dt_out").get<double>()},
+      {"frame_speed", space.frame_speed},
+      {"rtol", o.rtol},
+      {"atol", o.atol},
+      {"chi", space.chi},
+      {"frame_speed", space.frame_speed},
+      {"h_dry_fraction", space.h_dry_fraction},
+      {"F", base.Fr},
+      {"R", base.R},
+      {"Gamma", base.Gamma},
+      {"nu", base.nu},
+      {"u_mean", base.u_mean},
+      {"t_reached", r.t_reached},
+      {"mass_error", r.mass_error()}};
+  for (const auto& [k, v] : numbers) h5.attribute("/", k, v);
+  for (const MaterialConstant& c : material_constants)
+    h5.attribute("/", c.key, base.material.*c.value);
+  for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
+           {"model", "depthavg"},
+           {"curve", o.flow.curve},
+           {"init", o.init},
+           {"limiter", mo.limiter},
+           {"status", j.at("status").get<std::string>()},
+           {"message", r.message},
+           {"results_json", j.dump()}})
+    h5.attribute("/", k, v);
+  h5.close();
 }
 
 }  // namespace granbench::cli

@@ -16,7 +16,6 @@
 #include "analysis/cli/run_model.hpp"
 #include "analysis/spectral/measurement.hpp"
 #include "analysis/theory/dispersion.hpp"
-#include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
@@ -114,57 +113,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
                       {"u_mean", base.u_mean}};
   j.update(to_json(m));  // the measurement, spelled as in every command
 
-  if (!o.output.out.empty()) {
-    H5Writer h5(o.output.out);
-    write_surface_series(h5, "surface", r.series);
-    const std::vector<std::pair<std::string, double>> numbers = {
-        {"angle_deg", o.flow.angle_deg},
-        {"h0", o.flow.h0},
-        {"Lx", o.Lx},
-        {"nx", static_cast<double>(o.nx)},
-        {"a0", o.a0},
-        {"mode", static_cast<double>(o.mode)},
-        {"noise", o.noise},
-        {"seed", static_cast<double>(o.seed)},
-        {"t_end", o.t_end},
-        {"dt_out", out.dt_out},
-        {"frame_speed", space.frame_speed},
-        {"rtol", o.rtol},
-        {"atol", o.atol},
-        {"chi", chi},
-        {"frame_speed", space.frame_speed},
-        {"h_dry_fraction", space.h_dry_fraction},
-        {"mu_s", base.material.mu_s},
-        {"mu_d", base.material.mu_d},
-        {"I0", base.material.I0},
-        {"d", base.material.d},
-        {"phi", base.material.phi},
-        {"rho_star", base.material.rho_star},
-        {"g", base.material.g},
-        {"mu_inf", base.material.mu_inf},
-        {"alpha", base.material.alpha},
-        {"kk_mu0", base.material.kk_mu0},
-        {"kk_cK", base.material.kk_cK},
-        {"hm_c", base.material.hm_c},
-        {"F", base.Fr},
-        {"R", base.R},
-        {"Gamma", base.Gamma},
-        {"nu", base.nu},
-        {"u_mean", base.u_mean},
-        {"t_reached", r.t_reached},
-        {"mass_error", r.mass_error()}};
-    for (const auto& [k, v] : numbers) h5.attribute("/", k, v);
-    for (const auto& [k, v] :
-         std::vector<std::pair<std::string, std::string>>{{"model", "depthavg"},
-                                                          {"curve", o.flow.curve},
-                                                          {"init", o.init},
-                                                          {"limiter", mo.limiter},
-                                                          {"status", status},
-                                                          {"message", r.message},
-                                                          {"results_json", j.dump()}})
-      h5.attribute("/", k, v);
-    h5.close();
-  }
+  if (!o.output.out.empty()) write_depthavg_run(o, mo, space, base, r, j);
 
   print_depthavg_run(o, j, m);
   if (r.status == depthavg::RunStatus::Interrupted)

@@ -59,8 +59,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   using namespace granbench::twod;
   // --- options, paths and the restart, all before any work ---
   double Lz = 0.0;
-  const SolverParams params = twod_solver_params(o, mo, Lz);
-  const Grid grid(int(o.nx), mo.nz, o.Lx, Lz);
+  const SolverParams params = twod_run_params(o, mo, Lz);
+  const Grid grid(int(o.nx), mo.settings.nz, o.Lx, Lz);
   const SteadyState base = o.flow.steady();
   const std::vector<std::string> warnings = twod_warnings(base, grid.dz);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
@@ -152,7 +152,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   report.json["status"] = run_status_name(res.status);
   report.json["warnings"] = warnings;
   report.json["message"] = message;
-  report.json["eta_max"] = mo.eta_max;
+  report.json["eta_max"] = mo.settings.eta_max;
   output->finish(res.series, run_status_name(res.status), message, report.json.dump());
   report.status = res.status;
   report.message = message;

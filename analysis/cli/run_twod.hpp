@@ -10,27 +10,26 @@
 #include <string>
 
 #include "analysis/cli/run_model.hpp"
+#include "analysis/comparison/twod_settings.hpp"
 #include "analysis/spectral/measurement.hpp"
 #include "common/steady_state.hpp"
 #include "twod/parameters.hpp"
 #include "twod/run.hpp"
 #include "twod/solver.hpp"
+#include "twod/viscosity_mixing.hpp"
 
 namespace granbench::cli {
 
 struct TwodOptions {
-  int nz = 64;            // cells along z
-  double Lz = 0.0;        // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
-  double eta_max = 2.0;   // granular viscosity cap [Pa s]
-  double eta_min = 1e-3;  // granular viscosity floor [Pa s]
-  double D_min = 1e-6;    // floor on |D| [1/s]
-  double rho_light = twod::Rheology{}.rho_light;  // light-fluid density [kg/m^3]
-  double eta_light = twod::Rheology{}.eta_light;  // light-fluid viscosity [Pa s]
-  std::string mixing = "arithmetic";
-  double cfl = 0.4;
-  int viscosity_passes = 1;
-  double dt_max = 1e-3;      // [s]
-  double tolerance = 1e-10;  // relative residual of the linear solves
+  // The solver settings, shared with compare and sweep (analysis/comparison/twod_settings.hpp);
+  // settings.nx is unused here (RunOptions::nx), settings.Lz_over_h0 follows --Lz.
+  TwodSettings settings = [] {
+    TwodSettings s;
+    s.nz = 64;
+    return s;
+  }();
+  double Lz = 0.0;  // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
+  std::string mixing = twod::viscosity_mixing_name(twod::Rheology{}.mixing);  // --mixing's text
   double dt_snapshot = 0.0;  // interval of the 2D field snapshots [s]; 0: t_end/10
   std::string checkpoint;  // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
   double checkpoint_every = 1.0;  // simulated time between checkpoints [s]; 0: only at a stop
@@ -38,9 +37,12 @@ struct TwodOptions {
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
 
-// The solver parameters of these options (twod_options.cpp); UsageError naming the option when
-// they are inconsistent. `Lz` receives the domain height used.
-twod::SolverParams twod_solver_params(const RunOptions& run, const TwodOptions& model, double& Lz);
+// The chute case of `run`'s options (the flow, the domain length, the seed and run length).
+ChuteCase chute_case(const RunOptions& run);
+// The solver parameters of these options (twod_options.cpp), through the one builder of
+// twod_settings.hpp; UsageError naming the option when they are inconsistent. `Lz` receives the
+// domain height used.
+twod::SolverParams twod_run_params(const RunOptions& run, const TwodOptions& model, double& Lz);
 
 // One 2D run as `granbench run --model twod --json` reports it.
 struct TwodRunReport {

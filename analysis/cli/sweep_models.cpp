@@ -13,6 +13,7 @@
 #include "analysis/cli/mpi_session.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/run_model.hpp"
+#include "analysis/cli/sweep_report.hpp"
 #include "common/output_lock.hpp"
 
 namespace granbench::cli {
@@ -97,61 +98,6 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
   return s;
 }
 
-nlohmann::json theory_json(const TheoryValue& t) {
-  return {{"growth_rate", t.growth_rate}, {"phase_speed", t.phase_speed}};
-}
-
-double relative_error(double measured, double exact) {
-  return std::fabs(measured - exact) / std::fabs(exact);
-}
-
-nlohmann::json point_json(const SweepPoint& p) {
-  return {
-      {"model", p.model},
-      {"Lx", p.Lx},
-      {"k_hat", p.k_hat},
-      {"growth_rate", number_or_null(p.growth_rate)},
-      {"growth_rate_exact", p.growth_rate_exact},
-      {"phase_speed", number_or_null(p.phase_speed)},
-      {"phase_speed_exact", p.phase_speed_exact},
-      {"growth_relative_error", number_or_null(relative_error(p.growth_rate, p.growth_rate_exact))},
-      {"phase_speed_relative_error",
-       number_or_null(relative_error(p.phase_speed, p.phase_speed_exact))},
-      {"growth_rate_712", number_or_null(p.growth_rate_712)},
-      {"exact_711", theory_json(p.theory.exact)},
-      {"exact_bagnold", theory_json(p.theory.exact_bagnold)},
-      {"exact_2d", theory_json(p.theory.exact_2d)},
-      {"window", {number_or_null(p.window_start), number_or_null(p.window_end)}},
-      {"fit_r2", number_or_null(p.fit_r2)},
-      {"steps", p.steps},
-      {"mass_error", number_or_null(p.mass_error)},
-      {"wall_seconds", p.wall_seconds},
-      {"completed", p.completed},
-      {"resumed", p.resumed},
-      {"run_command",
-       p.run_command.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.run_command)},
-      {"status", p.completed         ? "completed"
-                 : p.message.empty() ? "unfinished"
-                                     : p.message}};
-}
-
-void print_table(const std::vector<SweepPoint>& points, const std::string& title) {
-  std::cout << title << "\n"
-            << std::setw(10) << "model" << std::setw(9) << "Lx [m]" << std::setw(9) << "k_hat"
-            << std::setw(12) << "growth" << std::setw(12) << "theory" << std::setw(10) << "rel.err"
-            << std::setw(11) << "speed" << std::setw(11) << "theory" << std::setw(10) << "rel.err"
-            << "\n";
-  for (const auto& p : points)
-    std::cout << std::setw(10) << p.model << std::setprecision(4) << std::setw(9) << p.Lx
-              << std::setw(9) << p.k_hat << std::setprecision(5) << std::setw(12) << p.growth_rate
-              << std::setw(12) << p.growth_rate_exact << std::setprecision(2) << std::setw(10)
-              << relative_error(p.growth_rate, p.growth_rate_exact) << std::setprecision(5)
-              << std::setw(11) << p.phase_speed << std::setw(11) << p.phase_speed_exact
-              << std::setprecision(2) << std::setw(10)
-              << relative_error(p.phase_speed, p.phase_speed_exact)
-              << (p.completed ? "" : "  (unfinished)") << (p.resumed ? "  (kept)" : "") << "\n";
-}
-
 }  // namespace
 
 void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohmann::json& settings,
@@ -181,22 +127,7 @@ void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohma
   const std::size_t finished = count([](const SweepPoint& p) { return p.completed; });
   const std::size_t resumed = count([](const SweepPoint& p) { return p.resumed; });
   if (output.json) {
-    double worst = 0.0;  // over the unstable points, against each model's own theory
-    nlohmann::json list = nlohmann::json::array();
-    for (const auto& p : points) {
-      if (p.growth_rate_exact > 0.0 && p.completed)
-        worst = std::max(worst, relative_error(p.growth_rate, p.growth_rate_exact));
-      list.push_back(point_json(p));
-    }
-    nlohmann::json j = settings;
-    j.update({{"jobs", spec.jobs},
-              {"ranks", s.ranks},
-              {"wall_seconds", wall},
-              {"points_run", points.size() - resumed},
-              {"points_resumed", resumed},
-              {"max_growth_relative_error_unstable", worst},
-              {"points", list}});
-    print_json(j);
+    print_json(sweep_json(points, settings, spec.jobs, s.ranks, wall));
   } else {
     std::ostringstream head;
     head << title << " (" << std::fixed << std::setprecision(1) << wall << " s wall, " << spec.jobs

@@ -106,10 +106,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
   refuse_options_that_do_not_apply(o, app);
   SweepPlan plan;
   SweepSpec& spec = plan.spec;
-  spec.chute.material = o.flow.material;
-  spec.chute.curve = o.flow.curve_kind();
-  spec.chute.angle_deg = o.flow.angle_deg;
-  spec.chute.h0 = o.flow.h0;
+  spec.chute = o.flow.chute(spec.chute.Lx);  // Lx is replaced by each point's
   (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
   if (o.depthavg.frame_speed != "linear" && o.depthavg.frame_speed != "0")
     throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +

@@ -2,53 +2,63 @@
 // set (run_twod.hpp). Parsing, validation and mapping only; the run is in run_twod.cpp.
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "analysis/cli/run_twod.hpp"
-#include "common/steady_state.hpp"
 #include "twod/initial_state.hpp"
-#include "twod/run.hpp"
 
 namespace granbench::cli {
 
+namespace {
+
+std::vector<std::string> mixing_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, rule] : twod::viscosity_mixing_names) names.emplace_back(name);
+  return names;
+}
+
+}  // namespace
+
 void add_twod_options(CLI::App& app, TwodOptions& o) {
-  app.add_option("--nz", o.nz, "twod: cells along z, in [4, 4096]")
+  app.add_option("--nz", o.settings.nz, "twod: cells along z, in [4, 4096]")
       ->check(CLI::Range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,
                  "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
       ->check(positive());
-  app.add_option("--eta-max", o.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
+  app.add_option("--eta-max", o.settings.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--eta-min", o.eta_min, "twod: floor on the granular viscosity [Pa s], > 0")
+  app.add_option("--eta-min", o.settings.eta_min,
+                 "twod: floor on the granular viscosity [Pa s], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--D-min", o.D_min, "twod: floor on |D| [1/s], > 0")
+  app.add_option("--D-min", o.settings.D_min, "twod: floor on |D| [1/s], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--rho-light", o.rho_light, "twod: light-fluid density [kg/m^3], > 0")
+  app.add_option("--rho-light", o.settings.rho_light, "twod: light-fluid density [kg/m^3], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--eta-light", o.eta_light, "twod: light-fluid viscosity [Pa s], > 0")
+  app.add_option("--eta-light", o.settings.eta_light, "twod: light-fluid viscosity [Pa s], > 0")
       ->check(positive())
       ->capture_default_str();
   app.add_option("--mixing", o.mixing, "twod: viscosity in interface cells {arithmetic,harmonic}")
-      ->check(one_of({"arithmetic", "harmonic"}))
+      ->check(one_of(mixing_names()))
       ->capture_default_str();
-  app.add_option("--cfl", o.cfl, "twod: Courant number per direction, in (0, 0.5)")
+  app.add_option("--cfl", o.settings.cfl, "twod: Courant number per direction, in (0, 0.5)")
       ->check(open_range(0.0, 0.5))
       ->capture_default_str();
   app.add_option(
-         "--viscosity-passes", o.viscosity_passes,
+         "--viscosity-passes", o.settings.viscosity_passes,
          "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
          "(1: one solve, second order in time through the stress tangent; more passes "
          "cost n times as much, docs/twod-validation.md)")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
-  app.add_option("--dt-max", o.dt_max, "twod: largest time step [s], > 0")
+  app.add_option("--dt-max", o.settings.dt_max, "twod: largest time step [s], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--tolerance", o.tolerance,
+  app.add_option("--tolerance", o.settings.tolerance,
                  "twod: relative residual of the linear solves, in (0, 1e-3)")
       ->check(open_range(0.0, 1e-3))
       ->capture_default_str();
@@ -71,35 +81,31 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
       ->check(CLI::ExistingFile);
 }
 
-twod::SolverParams twod_solver_params(const RunOptions& o, const TwodOptions& mo, double& Lz) {
-  using namespace granbench::twod;
+ChuteCase chute_case(const RunOptions& o) {
+  ChuteCase c = o.flow.chute(o.Lx);
+  c.a0 = o.a0;
+  c.seed = o.init == "eigenmode" ? Seed::Eigenmode : Seed::Sine;
+  c.t_end = o.t_end;
+  c.dt_out = o.dt_out;
+  return c;
+}
+
+twod::SolverParams twod_run_params(const RunOptions& o, const TwodOptions& mo, double& Lz) {
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
-  const MuCurve curve = o.flow.make_curve();
-  const double zeta = degrees_to_radians(o.flow.angle_deg);
-  const SteadyState base = o.flow.steady();  // no steady flow: an error on --angle
-  Lz = mo.Lz > 0.0 ? mo.Lz : twod::mid_cell_domain_height(o.flow.h0, mo.nz);
+  o.flow.steady();  // no steady flow: an error on --angle
+  Lz = mo.Lz > 0.0 ? mo.Lz : twod::mid_cell_domain_height(o.flow.h0, mo.settings.nz);
   if (!(Lz > o.flow.h0 + o.a0))
     throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
-  if (!(mo.eta_min < mo.eta_max))
-    throw UsageError("--eta-min: must be below --eta-max (" + std::to_string(mo.eta_max) + ")");
-  SolverParams params;
-  params.zeta = zeta;
-  params.rheology.material = o.flow.material;
-  params.rheology.curve = curve.kind();
-  params.rheology.h0_for_curve = o.flow.h0;
-  params.rheology.eta_max = mo.eta_max;
-  params.rheology.eta_min = mo.eta_min;
-  params.rheology.D_min = mo.D_min;
-  params.rheology.rho_light = mo.rho_light;
-  params.rheology.eta_light = mo.eta_light;
-  params.rheology.mixing =
-      mo.mixing == "harmonic" ? ViscosityMixing::Harmonic : ViscosityMixing::Arithmetic;
-  params.cfl = mo.cfl;
-  params.viscosity_passes = mo.viscosity_passes;
-  params.dt_max = mo.dt_max;
-  params.solver_tolerance = mo.tolerance;
-  params.velocity_limit = divergence_speed_limit(base.u_surface);
-  return params;
+  if (!(mo.settings.eta_min < mo.settings.eta_max))
+    throw UsageError("--eta-min: must be below --eta-max (" + std::to_string(mo.settings.eta_max) +
+                     ")");
+  TwodSettings settings = mo.settings;
+  settings.nx = int(o.nx);
+  settings.Lz_over_h0 = Lz / o.flow.h0;
+  settings.mixing = *twod::viscosity_mixing_from_name(mo.mixing);  // checked by the option
+  // The options were made before --threads was parsed; the thread count is this thread's now.
+  settings.threads = twod::thread_count();
+  return twod_solver_params(chute_case(o), settings);
 }
 
 }  // namespace granbench::cli

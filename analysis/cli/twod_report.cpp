@@ -81,7 +81,7 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     const SurfaceMeasurement& growth = r.measured.spectral;
     std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
               << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "
-              << o.nx << " x " << mo.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"
+              << o.nx << " x " << mo.settings.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"
               << "  t reached        " << j["t_reached"].get<double>() << " s in "
               << j["wall_seconds"].get<double>() << " s wall, " << j["steps"].get<long>()
               << " steps\n"

@@ -65,21 +65,10 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
   // The resolved configuration.
   const ChuteCase& k = c.chute;
   const Material& m = k.material;
-  out.attribute("/", "curve", std::string(curve_name(k.curve)));
-  for (auto [name, v] : {std::pair{"angle_deg", k.angle_deg},
-                         {"h0", k.h0},
-                         {"Lx", k.Lx},
+  write_flow_inputs(out, std::string(curve_name(k.curve)), m, k.angle_deg, k.h0);
+  for (auto [name, v] : {std::pair{"Lx", k.Lx},
                          {"a0", k.a0},
                          {"t_end", k.t_end},
-                         {"mu_s", m.mu_s},
-                         {"mu_d", m.mu_d},
-                         {"I0", m.I0},
-                         {"d", m.d},
-                         {"phi", m.phi},
-                         {"rho_star", m.rho_star},
-                         {"g", m.g},
-                         {"mu_inf", m.mu_inf},
-                         {"alpha", m.alpha},
                          {"twod_nx", double(twod.nx)},
                          {"twod_nz", double(twod.nz)},
                          {"twod_Lz", twod.domain_height(k.h0)},

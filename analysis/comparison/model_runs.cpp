@@ -116,16 +116,7 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
   const twod::Grid grid(s.nx, s.nz, c.Lx, s.domain_height(c.h0));
-  twod::SolverParams params;
-  params.zeta = base.zeta;
-  params.rheology.material = c.material;
-  params.rheology.curve = c.curve;
-  params.rheology.h0_for_curve = c.h0;
-  params.rheology.eta_max = s.eta_max;
-  params.rheology.rho_light = s.rho_light;
-  params.rheology.eta_light = s.eta_light;
-  params.viscosity_passes = s.viscosity_passes;
-  params.velocity_limit = twod::divergence_speed_limit(base.u_surface);  // as `run` (run.hpp)
+  twod::SolverParams params = twod_solver_params(c, s);
   params.threads = partner_done ? std::max(1, s.threads - 1) : s.threads;
 
   ModelRun m;

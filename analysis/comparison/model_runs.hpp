@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "analysis/comparison/chute_case.hpp"
+#include "analysis/comparison/twod_settings.hpp"
 #include "common/run_status.hpp"
 #include "common/surface_series.hpp"
 #include "twod/grid.hpp"
@@ -44,27 +45,6 @@ struct DepthAvgSettings {
   // Solve in the frame moving at the seeded mode's (7.11) phase speed (depthavg/rhs.hpp); the
   // series comes back in the lab frame. ~20 times fewer steps than the lab frame.
   bool co_moving = true;
-};
-
-struct TwodSettings {
-  int nx = 160, nz = 32;
-  double Lz_over_h0 = 0.0;  // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
-  double eta_max = 2.0;     // granular viscosity cap [Pa s] (docs/design.md §8)
-  double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
-  int chebyshev_N = 32;      // resolution of the eigenmode used for seeding
-  int viscosity_passes = 1;  // Picard passes for eta per step (twod/parameters.hpp)
-  // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
-  // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.
-  int threads = twod::thread_count();
-  // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep
-  // keeps that dx at every Lx, so that every point has the resolution the preset was judged at.
-  static constexpr double reference_length = 0.08;
-  int cells_along(double Lx) const {
-    return std::max(16, static_cast<int>(std::lround(nx * Lx / reference_length)));
-  }
-  double domain_height(double h0) const {
-    return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);
-  }
 };
 
 // The named grids of compare and sweep ({coarse, default, fine}): 2D grids with 16, 32 and 64

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "depthavg/params.hpp"
+#include "twod/viscosity_mixing.hpp"
 
 namespace granbench {
 
@@ -24,17 +25,25 @@ std::string chute_options(const ChuteCase& c, double dt_out) {
                   " --init " + (c.seed == Seed::Eigenmode ? "eigenmode" : "sine") + " --a0 " +
                   exact(c.a0) + " --t-end " + exact(c.t_end) + " --dt-out " + exact(dt_out);
   const Material table1;
-  const std::pair<const char*, double Material::*> constants[] = {
-      {"--mu-s", &Material::mu_s},   {"--mu-d", &Material::mu_d},
-      {"--I0", &Material::I0},       {"--d", &Material::d},
-      {"--phi", &Material::phi},     {"--rho-star", &Material::rho_star},
-      {"--g", &Material::g},         {"--mu-inf", &Material::mu_inf},
-      {"--alpha", &Material::alpha}, {"--kk-mu0", &Material::kk_mu0},
-      {"--kk-cK", &Material::kk_cK}, {"--hm-c", &Material::hm_c}};
-  for (const auto& [option, member] : constants)
-    if (c.material.*member != table1.*member)
-      s += std::string(" ") + option + " " + exact(c.material.*member);
+  for (const MaterialConstant& k : material_constants)
+    if (c.material.*k.value != table1.*k.value)
+      s += std::string(" ") + k.option + " " + exact(c.material.*k.value);
   return s;
+}
+
+// The 2D settings that compare and sweep leave at their defaults, named only when changed.
+std::string twod_numerics_options(const TwodSettings& s) {
+  const TwodSettings defaults;
+  std::string text;
+  for (const auto& [option, member] : {std::pair{"--eta-min", &TwodSettings::eta_min},
+                                       {"--D-min", &TwodSettings::D_min},
+                                       {"--cfl", &TwodSettings::cfl},
+                                       {"--dt-max", &TwodSettings::dt_max},
+                                       {"--tolerance", &TwodSettings::tolerance}})
+    if (s.*member != defaults.*member) text += std::string(" ") + option + " " + exact(s.*member);
+  if (s.mixing != defaults.mixing)
+    text += std::string(" --mixing ") + twod::viscosity_mixing_name(s.mixing);
+  return text;
 }
 
 }  // namespace
@@ -54,7 +63,8 @@ std::string twod_run_command(const ChuteCase& c, const TwodSettings& s, double d
   return "granbench run --model twod" + chute_options(c, dt_out) + " --nx " + std::to_string(s.nx) +
          " --nz " + std::to_string(s.nz) + " --Lz " + exact(s.domain_height(c.h0)) + " --eta-max " +
          exact(s.eta_max) + " --rho-light " + exact(s.rho_light) + " --eta-light " +
-         exact(s.eta_light) + " --viscosity-passes " + std::to_string(s.viscosity_passes);
+         exact(s.eta_light) + " --viscosity-passes " + std::to_string(s.viscosity_passes) +
+         twod_numerics_options(s);
 }
 
 }  // namespace granbench

@@ -14,19 +14,8 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
   std::vector<std::pair<std::string, double>> v = {{"curve", static_cast<double>(c.curve)},
                                                    {"angle_deg", c.angle_deg},
                                                    {"h0", c.h0},
-                                                   {"mu_s", m.mu_s},
-                                                   {"mu_d", m.mu_d},
-                                                   {"I0", m.I0},
-                                                   {"d", m.d},
-                                                   {"phi", m.phi},
-                                                   {"rho_star", m.rho_star},
-                                                   {"g", m.g},
-                                                   {"mu_inf", m.mu_inf},
-                                                   {"alpha", m.alpha},
-                                                   {"kk_mu0", m.kk_mu0},
-                                                   {"kk_cK", m.kk_cK},
-                                                   {"hm_c", m.hm_c},
                                                    {"depthavg_chi", s.depthavg_settings.chi}};
+  for (const MaterialConstant& k : material_constants) v.emplace_back(k.key, m.*k.value);
   if (s.depthavg_linear) {
     const depthavg::LinearRunParams& l = *s.depthavg_linear;
     v.insert(v.end(), {{"linear_nx", static_cast<double>(l.nx)},

@@ -1,0 +1,94 @@
+// What `granbench sweep` reports; see sweep_report.hpp.
+#include "analysis/cli/sweep_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+#include "analysis/cli/cli_common.hpp"
+
+namespace granbench::cli {
+
+namespace {
+
+nlohmann::json theory_json(const TheoryValue& t) {
+  return {{"growth_rate", t.growth_rate}, {"phase_speed", t.phase_speed}};
+}
+
+double relative_error(double measured, double exact) {
+  return std::fabs(measured - exact) / std::fabs(exact);
+}
+
+}  // namespace
+
+nlohmann::json point_json(const SweepPoint& p) {
+  return {
+      {"model", p.model},
+      {"Lx", p.Lx},
+      {"k_hat", p.k_hat},
+      {"growth_rate", number_or_null(p.growth_rate)},
+      {"growth_rate_exact", p.growth_rate_exact},
+      {"phase_speed", number_or_null(p.phase_speed)},
+      {"phase_speed_exact", p.phase_speed_exact},
+      {"growth_relative_error", number_or_null(relative_error(p.growth_rate, p.growth_rate_exact))},
+      {"phase_speed_relative_error",
+       number_or_null(relative_error(p.phase_speed, p.phase_speed_exact))},
+      {"growth_rate_712", number_or_null(p.growth_rate_712)},
+      {"exact_711", theory_json(p.theory.exact)},
+      {"exact_bagnold", theory_json(p.theory.exact_bagnold)},
+      {"exact_2d", theory_json(p.theory.exact_2d)},
+      {"window", {number_or_null(p.window_start), number_or_null(p.window_end)}},
+      {"fit_r2", number_or_null(p.fit_r2)},
+      {"steps", p.steps},
+      {"mass_error", number_or_null(p.mass_error)},
+      {"wall_seconds", p.wall_seconds},
+      {"completed", p.completed},
+      {"resumed", p.resumed},
+      {"run_command",
+       p.run_command.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.run_command)},
+      {"status", p.completed         ? "completed"
+                 : p.message.empty() ? "unfinished"
+                                     : p.message}};
+}
+
+void print_table(const std::vector<SweepPoint>& points, const std::string& title) {
+  std::cout << title << "\n"
+            << std::setw(10) << "model" << std::setw(9) << "Lx [m]" << std::setw(9) << "k_hat"
+            << std::setw(12) << "growth" << std::setw(12) << "theory" << std::setw(10) << "rel.err"
+            << std::setw(11) << "speed" << std::setw(11) << "theory" << std::setw(10) << "rel.err"
+            << "\n";
+  for (const auto& p : points)
+    std::cout << std::setw(10) << p.model << std::setprecision(4) << std::setw(9) << p.Lx
+              << std::setw(9) << p.k_hat << std::setprecision(5) << std::setw(12) << p.growth_rate
+              << std::setw(12) << p.growth_rate_exact << std::setprecision(2) << std::setw(10)
+              << relative_error(p.growth_rate, p.growth_rate_exact) << std::setprecision(5)
+              << std::setw(11) << p.phase_speed << std::setw(11) << p.phase_speed_exact
+              << std::setprecision(2) << std::setw(10)
+              << relative_error(p.phase_speed, p.phase_speed_exact)
+              << (p.completed ? "" : "  (unfinished)") << (p.resumed ? "  (kept)" : "") << "\n";
+}
+
+nlohmann::json sweep_json(const std::vector<SweepPoint>& points, const nlohmann::json& settings,
+                          unsigned jobs, int ranks, double wall_seconds) {
+  const auto resumed = static_cast<std::size_t>(
+      std::count_if(points.begin(), points.end(), [](const SweepPoint& p) { return p.resumed; }));
+  double worst = 0.0;  // over the unstable points, against each model's own theory
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& p : points) {
+    if (p.growth_rate_exact > 0.0 && p.completed)
+      worst = std::max(worst, relative_error(p.growth_rate, p.growth_rate_exact));
+    list.push_back(point_json(p));
+  }
+  nlohmann::json j = settings;
+  j.update({{"jobs", jobs},
+            {"ranks", ranks},
+            {"wall_seconds", wall_seconds},
+            {"points_run", points.size() - resumed},
+            {"points_resumed", resumed},
+            {"max_growth_relative_error_unstable", worst},
+            {"points", list}});
+  return j;
+}
+
+}  // namespace granbench::cli

@@ -1,0 +1,50 @@
+// The 2D model's settings for a chute case (chute_case.hpp): grid, light fluid, the viscosity
+// cap and floors, the interface viscosity rule and the time-step and solver controls. One type
+// for every caller (`run --model twod`, compare, sweep and the layer cases), and one function
+// that turns a case and these settings into the solver's parameters.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/comparison/chute_case.hpp"
+#include "twod/grid.hpp"
+#include "twod/parallel.hpp"
+#include "twod/parameters.hpp"
+
+namespace granbench {
+
+struct TwodSettings {
+  int nx = 160, nz = 32;
+  double Lz_over_h0 = 0.0;  // 0: about 2, the surface mid-cell (twod::mid_cell_domain_height)
+  double eta_max = twod::Rheology{}.eta_max;  // granular viscosity cap [Pa s] (docs/design.md §8)
+  double eta_min = twod::Rheology{}.eta_min;  // granular viscosity floor [Pa s]
+  double D_min = twod::Rheology{}.D_min;      // floor on |D| [1/s]
+  double rho_light = twod::Rheology{}.rho_light, eta_light = twod::Rheology{}.eta_light;
+  twod::ViscosityMixing mixing = twod::Rheology{}.mixing;    // in interface cells
+  double cfl = twod::SolverParams{}.cfl;                     // Courant number per direction
+  double dt_max = twod::SolverParams{}.dt_max;               // [s]
+  double tolerance = twod::SolverParams{}.solver_tolerance;  // relative residual of linear solves
+  int viscosity_passes = twod::SolverParams{}.viscosity_passes;  // Picard passes for eta per step
+  int chebyshev_N = 32;  // resolution of the eigenmode used for seeding
+  // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
+  // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.
+  int threads = twod::thread_count();
+  // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep
+  // keeps that dx at every Lx, so that every point has the resolution the preset was judged at.
+  static constexpr double reference_length = 0.08;
+  int cells_along(double Lx) const {
+    return std::max(16, static_cast<int>(std::lround(nx * Lx / reference_length)));
+  }
+  double domain_height(double h0) const {
+    return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);
+  }
+};
+
+// The solver's parameters for the case's material, curve, slope and depth and these settings;
+// the only place they are assembled from user input. The divergence limit on |u| is ten times
+// the surface speed of the case's steady flow (twod/run.hpp), or the solver's default on a
+// slope with no steady flow (the decelerating layer of §5.2).
+twod::SolverParams twod_solver_params(const ChuteCase& c, const TwodSettings& s);
+
+}  // namespace granbench

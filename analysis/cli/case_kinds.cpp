@@ -27,8 +27,13 @@ void parse_run_table(const cases::CaseFile& file, const std::string& resolution,
   add_depthavg_options(app, depthavg);
   add_twod_options(app, twod);
   std::vector<std::string> args;
-  for (const auto& [key, values] : file.table("run", resolution))
-    for (const auto& v : values) args.push_back("--" + key + "=" + v);
+  // Case files spell every key with underscores (t_end, dt_snapshot), the [run] table too; the
+  // option of a key is its name with '-' for '_' (t_end: --t-end).
+  for (const auto& [key, values] : file.table("run", resolution)) {
+    std::string option = key;
+    std::replace(option.begin(), option.end(), '_', '-');
+    for (const auto& v : values) args.push_back("--" + option + "=" + v);
+  }
   std::reverse(args.begin(), args.end());  // CLI11 takes a vector of arguments last first
   try {
     app.parse(args);

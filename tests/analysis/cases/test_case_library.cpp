@@ -25,7 +25,7 @@ TEST(CaseFile, ResolutionTablesOverrideTopLevelKeys) {
       write_file("gb_case_a.toml",
                  "kind = \"decelerating\"\nt_end = 0.2\ncurves = [\"jop\", \"low-i\"]\n"
                  "[smoke]\nt_end = 0.01\nnx = [16, 32]\n[run]\nnx = 160\n[smoke.run]\nnx = "
-                 "32\nt-end = 0.2\n"));
+                 "32\nt_end = 0.2\n"));
   EXPECT_EQ(f.name(), "gb_case_a");
   EXPECT_EQ(f.text("kind"), "decelerating");
   EXPECT_DOUBLE_EQ(f.number("t_end", "paper"), 0.2);
@@ -37,7 +37,7 @@ TEST(CaseFile, ResolutionTablesOverrideTopLevelKeys) {
   EXPECT_EQ(paper.at("nx"), std::vector<std::string>{"160"});
   const auto smoke = f.table("run", "smoke");
   EXPECT_EQ(smoke.at("nx"), std::vector<std::string>{"32"});
-  EXPECT_EQ(smoke.at("t-end"), std::vector<std::string>{"0.2"});
+  EXPECT_EQ(smoke.at("t_end"), std::vector<std::string>{"0.2"});
 }
 
 // The progress of a layer case: a status line naming every run, and a fraction of the work done

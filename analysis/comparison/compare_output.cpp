@@ -69,13 +69,7 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
   for (auto [name, v] : {std::pair{"Lx", k.Lx},
                          {"a0", k.a0},
                          {"t_end", k.t_end},
-                         {"twod_nx", double(twod.nx)},
-                         {"twod_nz", double(twod.nz)},
                          {"twod_Lz", twod.domain_height(k.h0)},
-                         {"twod_eta_max", twod.eta_max},
-                         {"twod_rho_light", twod.rho_light},
-                         {"twod_eta_light", twod.eta_light},
-                         {"twod_viscosity_passes", double(twod.viscosity_passes)},
                          {"depthavg_nx", double(depthavg.nx)},
                          {"depthavg_chi", depthavg.chi},
                          {"depthavg_rtol", depthavg.rtol},
@@ -84,6 +78,7 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
                          {"u_mean", c.base.u_mean},
                          {"Fr", c.base.Fr}})
     out.attribute("/", name, v);
+  for (const auto& [name, value] : named_values(twod)) out.attribute("/", "twod_" + name, value);
   out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));
   out.close();
 }

@@ -40,6 +40,28 @@ double sampling_interval(const ChuteCase& c, double wave_speed_estimate) {
   return c.t_end / std::ceil(c.t_end / dt - 1e-9);
 }
 
+namespace {
+
+// The sampling intervals of the runs: the wave's phase is resolved with the speed of (7.11) with
+// the run's chi, and for the 2D model with chi = 5/4, close to the 2D linear speed
+// (docs/design.md §10).
+double depthavg_sampling_interval(const ChuteCase& c, const SteadyState& base, double chi) {
+  return sampling_interval(c, dispersion_mode(base, chi, c.Lx).phase_speed);
+}
+double twod_sampling_interval(const ChuteCase& c, const SteadyState& base) {
+  return sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
+}
+
+}  // namespace
+
+std::string depthavg_command_of(const ChuteCase& c, const DepthAvgSettings& s) {
+  return depthavg_run_command(c, s, depthavg_sampling_interval(c, c.steady(), s.chi));
+}
+
+std::string twod_command_of(const ChuteCase& c, const TwodSettings& s) {
+  return twod_run_command(c, s, twod_sampling_interval(c, c.steady()));
+}
+
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl) {
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
@@ -60,7 +82,7 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   init.a0 = c.a0;
   depthavg::OutputParams out;
   out.t_end = c.t_end;
-  out.dt_out = sampling_interval(c, exact.phase_speed);
+  out.dt_out = depthavg_sampling_interval(c, base, s.chi);
 
   const depthavg::Solver solver(base, curve, space, integ);
   const auto U0 = depthavg::initial_state(solver.rhs(), init, exact.lambda_hat);
@@ -127,10 +149,9 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
           : twod::perturbed_bagnold(base, c.a0, c.Lx);
   twod::Solver solver(grid, params, twod::make_initial_state(grid, ic, params));
 
-  // The 2D linear speed is close to the chi = 5/4 depth-averaged one (docs/design.md §10).
   twod::RunSchedule schedule;
   schedule.t_end = c.t_end;
-  schedule.dt_out = sampling_interval(c, dispersion_mode(base, 1.25, c.Lx).phase_speed);
+  schedule.dt_out = twod_sampling_interval(c, base);
   twod::RunHooks hooks;
   hooks.stop = ctl.stop;
   hooks.sample = [&](const twod::Solver& sv, const SurfaceSeries&) {

@@ -59,6 +59,11 @@ struct GridPreset {
 GridPreset grid_preset(const std::string& name);
 
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl = {});
+// The `granbench run` command lines that reproduce run_depthavg(c, s) and run_twod(c, s)
+// (run_command.hpp), with the sampling interval those runs choose; without running anything, so
+// that a point read back from a sweep file gets the same command as when it ran.
+std::string depthavg_command_of(const ChuteCase& c, const DepthAvgSettings& s);
+std::string twod_command_of(const ChuteCase& c, const TwodSettings& s);
 ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& ctl = {});
 
 // Both models on the same case at once, each on its own std::thread; returns {depthavg, twod},

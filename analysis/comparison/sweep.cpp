@@ -64,13 +64,28 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.message = r.message;
 }
 
+// The 2D settings of a point of length Lx: the preset's dx at every length, and the --jobs
+// workers sharing the OpenMP threads (oversubscribed threads wait on each other).
+TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
+  TwodSettings twod = spec.twod_settings;
+  twod.nx = twod.cells_along(Lx);
+  twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
+  return twod;
+}
+
+// The `granbench run` command of a seeded point; empty for a depth-averaged linear run (no
+// `run` equivalent).
+std::string seeded_run_command(const SweepSpec& spec, const SweepPoint& p) {
+  ChuteCase c = spec.chute;
+  c.Lx = p.Lx;
+  if (p.model == "twod") return twod_command_of(c, point_twod_settings(spec, p.Lx));
+  return spec.depthavg_linear ? std::string() : depthavg_command_of(c, spec.depthavg_settings);
+}
+
 // A point from a seeded run of either model, measured like compare's (compare.hpp).
 void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
-  TwodSettings twod = spec.twod_settings;
-  twod.nx = twod.cells_along(c.Lx);  // the preset's dx at every length
-  // the --jobs workers share the OpenMP threads (oversubscribed threads wait on each other)
-  twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
+  const TwodSettings twod = point_twod_settings(spec, c.Lx);
   const ModelRun r =
       p.model == "twod" ? run_twod(c, twod, ctl) : run_depthavg(c, spec.depthavg_settings, ctl);
   MeasureOptions opt;
@@ -224,6 +239,10 @@ std::vector<SweepPoint> run_share(const SweepSpec& spec, const std::vector<Sweep
 }
 
 std::vector<SweepPoint> finish_sweep(const SweepSpec& spec, std::vector<SweepPoint> points) {
+  // Points read back from a file or from another process carry no command line (the store keeps
+  // numbers only); it is a function of the spec and the length, so it is made again here.
+  for (SweepPoint& p : points)
+    if (p.run_command.empty()) p.run_command = seeded_run_command(spec, p);
   sort_points(points);
   if (spec.out.empty()) return points;
   write_sweep(spec.out, spec, points);

@@ -42,8 +42,9 @@ struct SweepPoint {
   bool completed = false;
   bool resumed = false;  // read back from an earlier run (not stored)
   std::string message;   // why a point did not complete (not stored)
-  // `granbench run ...` that reproduces a seeded point's run (run_command.hpp); empty for the
-  // depth-averaged linear runs (no `run` equivalent) and for resumed points (not stored)
+  // `granbench run ...` that reproduces a seeded point's run (run_command.hpp), also for resumed
+  // points (made again from the spec); empty for the depth-averaged linear runs (no `run`
+  // equivalent)
   std::string run_command;
 };
 

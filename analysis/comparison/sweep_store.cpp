@@ -25,23 +25,16 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
                        {"linear_reconstruction", static_cast<double>(l.reconstruction)},
                        {"linear_co_moving", l.co_moving ? 1.0 : 0.0}});
   } else {
-    v.insert(v.end(),
-             {{"a0", c.a0},
-              {"seed", static_cast<double>(c.seed)},
-              {"t_end", c.t_end},
-              {"dt_out", c.dt_out},
-              {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
-              {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
-              {"depthavg_rtol", s.depthavg_settings.rtol},
-              {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0},
-              {"twod_nx", static_cast<double>(s.twod_settings.nx)},
-              {"twod_nz", static_cast<double>(s.twod_settings.nz)},
-              {"twod_Lz_over_h0", s.twod_settings.Lz_over_h0},
-              {"twod_eta_max", s.twod_settings.eta_max},
-              {"twod_rho_light", s.twod_settings.rho_light},
-              {"twod_eta_light", s.twod_settings.eta_light},
-              {"twod_chebyshev_N", static_cast<double>(s.twod_settings.chebyshev_N)},
-              {"twod_viscosity_passes", static_cast<double>(s.twod_settings.viscosity_passes)}});
+    v.insert(v.end(), {{"a0", c.a0},
+                       {"seed", static_cast<double>(c.seed)},
+                       {"t_end", c.t_end},
+                       {"dt_out", c.dt_out},
+                       {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
+                       {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
+                       {"depthavg_rtol", s.depthavg_settings.rtol},
+                       {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0}});
+    for (const auto& [name, value] : named_values(s.twod_settings))
+      v.emplace_back("twod_" + name, value);
   }
   return v;
 }

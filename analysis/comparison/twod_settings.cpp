@@ -31,4 +31,21 @@ twod::SolverParams twod_solver_params(const ChuteCase& c, const TwodSettings& s)
   return p;
 }
 
+std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) {
+  return {{"nx", double(s.nx)},
+          {"nz", double(s.nz)},
+          {"Lz_over_h0", s.Lz_over_h0},
+          {"eta_max", s.eta_max},
+          {"eta_min", s.eta_min},
+          {"D_min", s.D_min},
+          {"rho_light", s.rho_light},
+          {"eta_light", s.eta_light},
+          {"mixing", double(static_cast<int>(s.mixing))},
+          {"cfl", s.cfl},
+          {"dt_max", s.dt_max},
+          {"tolerance", s.tolerance},
+          {"viscosity_passes", double(s.viscosity_passes)},
+          {"chebyshev_N", double(s.chebyshev_N)}};
+}
+
 }  // namespace granbench

@@ -6,6 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "analysis/comparison/chute_case.hpp"
 #include "twod/grid.hpp"
@@ -40,6 +43,10 @@ struct TwodSettings {
     return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);
   }
 };
+
+// Every setting by name (the mixing rule by its enum value), for the stored settings of a sweep
+// and the attributes of compare's file ("twod_" + name): one list, so none of them misses one.
+std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s);
 
 // The solver's parameters for the case's material, curve, slope and depth and these settings;
 // the only place they are assembled from user input. The divergence limit on |u| is ten times

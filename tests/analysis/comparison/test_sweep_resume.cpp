@@ -41,6 +41,11 @@ TEST(Sweep, ResumesFromTheOutputFile) {
   ASSERT_EQ(second.size(), 3u);
   EXPECT_DOUBLE_EQ(second[0].growth_rate, first[0].growth_rate);
   EXPECT_DOUBLE_EQ(second[2].growth_rate, first[1].growth_rate);
+  // The resumed points reproduce with the command they ran with (made again from the spec).
+  EXPECT_TRUE(second[0].resumed);
+  ASSERT_FALSE(first[0].run_command.empty());
+  EXPECT_EQ(second[0].run_command, first[0].run_command);
+  EXPECT_EQ(second[2].run_command, first[1].run_command);
   std::filesystem::remove(path);
 }
 

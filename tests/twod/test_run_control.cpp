@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/steady_state.hpp"
+#include "tests/support/small_twod_rollwave.hpp"
 #include "twod/checkpoint.hpp"
 #include "twod/initial_state.hpp"
 #include "twod/run.hpp"
@@ -23,20 +24,7 @@ using namespace granbench;
 using namespace granbench::twod;
 
 namespace {
-struct Case {
-  SolverParams params;
-  Grid grid{32, 8, 0.04, 0.008};
-  InitialCondition ic;
-  Case() {
-    params.zeta = degrees_to_radians(28.5);
-    const MuCurve curve(CurveKind::Regularised, params.rheology.material, 0.004);
-    ic = perturbed_bagnold(steady_state(curve, params.zeta, 0.004), 2e-4, grid.Lx);
-  }
-  Solver solver() const { return Solver(grid, params, make_initial_state(grid, ic, params)); }
-  SurfaceSeries empty_series() const {
-    return SurfaceSeries::uniform_grid(grid.Lx, grid.nx, 0.004);
-  }
-};
+using Case = granbench::testing::SmallTwodRollwave;
 
 RunSchedule schedule(double t_end, double dt_out, double dt_snapshot = 0.0) {
   RunSchedule s;

@@ -2,24 +2,17 @@
 # would see: the whole grid (nx x nz cells), every field and the velocity vector, every time, and a
 # Threshold f > 0.5 that keeps part of the cells. Run by test_xdmf_output under pvpython:
 #   pvpython open_xdmf.py run.xdmf NX NZ
+import os
 import sys
 
 from paraview import simple as pv
 
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "support"))
+from paraview_readers import open_with_each_reader  # noqa: E402
+
 path, nx, nz = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 failures = []
-for reader in ("XDMFReader", "Xdmf3ReaderS", "Xdmf3ReaderT"):
-    # The legacy reader names its file property FileNames, the Xdmf3 readers FileName.
-    name = "FileNames" if reader == "XDMFReader" else "FileName"
-    source = getattr(pv, reader)(**{name: [path]})
-    times = list(source.TimestepValues or [])
-    # MergeBlocks gives one data set whatever the reader's output (a grid, or blocks of one).
-    merged = pv.MergeBlocks(Input=source)
-    merged.UpdatePipeline(times[-1] if times else 0.0)
-    block = pv.servermanager.Fetch(merged)
-    cells = block.GetNumberOfCells() if block else 0
-    data = block.GetCellData() if block else None
-    arrays = {data.GetArrayName(i) for i in range(data.GetNumberOfArrays())} if data else set()
+for reader, source, times, cells, arrays in open_with_each_reader(path):
     if cells != nx * nz:
         failures.append(f"{reader}: {cells} cells, not {nx * nz}")
     missing = {"u", "w", "p", "f", "I", "eta", "C", "velocity"} - arrays

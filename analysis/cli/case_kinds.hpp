@@ -29,6 +29,9 @@ std::string path_in(const CaseOptions& o, const std::string& file);
 // drawn first).
 nlohmann::json run_layer_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code);
 nlohmann::json run_rollwave_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code);
+// Figure 13 with the 2D model, in the paper's protocol and with eigenmode seeding
+// (case_figure13.cpp).
+nlohmann::json run_figure13_kind(const cases::CaseFile& file, const CaseOptions& o, int& exit_code);
 nlohmann::json run_wellposed_kind(const cases::CaseFile& file, const CaseOptions& o);
 
 }  // namespace granbench::cli

@@ -50,6 +50,27 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
       if (r.contains(key) && !r[key].is_null())
         std::cout << "  " << key << " " << r[key].dump() << "\n";
   }
+  if (j.contains("points")) {  // figure13: growth rates [1/s] per length, beside the theories
+    std::cout << "   Lx [m]   k_hat   (7.11)  chi=5/4   2D exact   sine (7.12)  vs 2D   "
+                 "eigenmode  vs 2D\n";
+    auto num = [](const nlohmann::json& v, const char* format, double scale = 1.0) {
+      char b[32];
+      if (v.is_null()) return std::string("-");
+      std::snprintf(b, sizeof b, format, scale * v.get<double>());
+      return std::string(b);
+    };
+    for (const auto& p : j["points"]) {
+      char line[256];
+      std::snprintf(line, sizeof line, "  %7.3f  %6.3f  %7.3f  %7.3f  %9.3f  %11s  %6s  %9s  %6s\n",
+                    p["Lx"].get<double>(), p["k_hat"].get<double>(), p["exact_711"].get<double>(),
+                    p["exact_bagnold"].get<double>(), p["exact_2d"].get<double>(),
+                    num(p["sine_712"], "%.3f").c_str(),
+                    num(p["sine_712_vs_2d"], "%+.0f%%", 100.0).c_str(),
+                    num(p["eigenmode_spectral"], "%.3f").c_str(),
+                    num(p["eigenmode_vs_2d"], "%+.0f%%", 100.0).c_str());
+      std::cout << line;
+    }
+  }
   if (j.contains("outputs"))
     for (const auto& f : j["outputs"]) std::cout << "  wrote " << f.get<std::string>() << "\n";
 }

@@ -65,9 +65,12 @@ void run_case(const CaseOptions& o) {
       j = run_rollwave_kind(file, o, exit_code);
     else if (kind == "wellposed")
       j = run_wellposed_kind(file, o);
+    else if (kind == "figure13")
+      j = run_figure13_kind(file, o, exit_code);
     else
-      throw cases::CaseFileError(path + ": key 'kind' = '" + kind +
-                                 "'; valid values {decelerating,high-speed,rollwave,wellposed}");
+      throw cases::CaseFileError(
+          path + ": key 'kind' = '" + kind +
+          "'; valid values {decelerating,high-speed,rollwave,wellposed,figure13}");
   } catch (const cases::CaseFileError& e) {
     throw UsageError(std::string("case file ") + e.what());
   }

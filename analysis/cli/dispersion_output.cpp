@@ -50,13 +50,12 @@ void write_dispersion_data(const std::string& path, const SteadyState& s, double
   out.close();
 }
 
-void write_theories(const std::string& path, const SteadyState& s,
-                    const std::vector<Linear2DResult>& results, const Linear2DOptions& opt,
-                    const std::string& curve) {
+void write_theory_curves(H5Writer& out, const SteadyState& s, const linear2d::LinearBaseState& base,
+                         int N) {
   std::vector<double> k_hat;
   for (int i = 0; i < 60; ++i) k_hat.push_back(std::pow(10.0, -2.0 + 3.0 * i / 59.0));
-  const int N_curve = std::min(opt.N, 24);  // converged to ~1e-7 (tests/analysis/linear2d)
-  const auto branch = linear2d::surface_branch(results.front().base, k_hat, N_curve);
+  const int N_curve = std::min(N, 24);  // converged to ~1e-7 (tests/analysis/linear2d)
+  const auto branch = linear2d::surface_branch(base, k_hat, N_curve);
   const double rate = s.u_mean / s.h0;
   std::vector<double> Lx, g2, c2, go, co, g1, c1, g54, c54;
   for (const auto& p : branch) {
@@ -72,7 +71,6 @@ void write_theories(const std::string& path, const SteadyState& s,
     g54.push_back(d54.growth_rate);
     c54.push_back(d54.phase_speed);
   }
-  H5Writer out(path);
   out.write("curve/k_hat", k_hat);
   out.write("curve/Lx", Lx);
   out.write("curve/twod_growth_rate", g2);
@@ -83,6 +81,13 @@ void write_theories(const std::string& path, const SteadyState& s,
   out.write("curve/depthavg_phase_speed", c1);
   out.write("curve/bagnold_growth_rate", g54);
   out.write("curve/bagnold_phase_speed", c54);
+}
+
+void write_theories(const std::string& path, const SteadyState& s,
+                    const std::vector<Linear2DResult>& results, const Linear2DOptions& opt,
+                    const std::string& curve) {
+  H5Writer out(path);
+  write_theory_curves(out, s, results.front().base, opt.N);
   std::vector<double> pL, pk, pg, pc;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];

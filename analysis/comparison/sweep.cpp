@@ -7,6 +7,8 @@
 #include <mutex>
 #include <thread>
 
+#include "analysis/spectral/growth_estimator_712.hpp"
+
 namespace granbench {
 
 std::vector<double> parse_range(const std::string& text) {
@@ -96,6 +98,13 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
   p.growth_rate = m.spectral.growth_rate;
   p.phase_speed = m.spectral.phase_speed;
   p.growth_rate_712 = m.growth_712.value_or(NAN);
+  if (spec.window_712) try {
+      p.growth_rate_712 =
+          growth_estimate_712(r.series, spec.window_712->first, spec.window_712->second)
+              .growth_rate;
+    } catch (const std::invalid_argument&) {
+      p.growth_rate_712 = NAN;  // the window holds no growth above h0 (or too few samples)
+    }
   if (p.model == "twod") {
     p.growth_rate_exact = p.theory.exact_2d.growth_rate;
     p.phase_speed_exact = p.theory.exact_2d.phase_speed;

@@ -19,6 +19,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis/comparison/compare.hpp"
@@ -57,6 +58,9 @@ struct SweepSpec {
   // with depthavg_settings.chi (depthavg_settings.nx is then unused).
   std::optional<depthavg::LinearRunParams> depthavg_linear;
   TwodSettings twod_settings;
+  // Set: growth_rate_712 is (7.12) averaged over this fixed window [t0, t1] (the paper's
+  // protocol for figure 13: 0.5 s < t < 3 s), not over the spectral fit's window.
+  std::optional<std::pair<double, double>> window_712;
   unsigned jobs = 2;
   std::string out;  // HDF5 file; empty: not written, nothing resumed
   // This process's share of the points (MPI ranks): point i runs here if i % ranks == rank.

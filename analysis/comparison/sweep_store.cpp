@@ -33,6 +33,9 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
                        {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
                        {"depthavg_rtol", s.depthavg_settings.rtol},
                        {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0}});
+    if (s.window_712)
+      v.insert(v.end(), {{"window_712_start", s.window_712->first},
+                         {"window_712_end", s.window_712->second}});
     for (const auto& [name, value] : named_values(s.twod_settings))
       v.emplace_back("twod_" + name, value);
   }

@@ -154,6 +154,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   report.json["message"] = message;
   report.json["eta_max"] = mo.settings.eta_max;
   output->finish(res.series, run_status_name(res.status), message, report.json.dump());
+  report.series = res.series;
   report.status = res.status;
   report.message = message;
   report.Lz = Lz;

@@ -50,6 +50,7 @@ struct TwodRunReport {
   twod::RunStatus status = twod::RunStatus::Completed;
   std::string message;   // why it stopped early (with the checkpoint's path)
   Measurement measured;  // the measurement behind json's growth keys
+  SurfaceSeries series;  // h(x, t) of the whole run (a restart's included)
   double Lz = 0.0;       // the domain height used [m]
 };
 

@@ -37,11 +37,11 @@ const nlohmann::json& run_named(const nlohmann::json& j, const std::string& labe
   throw std::runtime_error("no run " + label);
 }
 
-TEST(CaseSmoke, ListsTheSixPaperCases) {
+TEST(CaseSmoke, ListsThePaperCases) {
   const auto r = run_granbench("case --list", "case_list");
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* name :
-       {"decelerating", "high-speed", "rollwave-8cm", "rollwave-12cm", "wellposed", "figure13"})
+  for (const char* name : {"decelerating", "high-speed", "rollwave-8cm", "rollwave-12cm",
+                           "rollwave-12cm-eigenmode", "wellposed", "figure13"})
     EXPECT_NE(r.out.find(std::string(name) + "  ["), std::string::npos) << name;
 }
 
@@ -126,6 +126,22 @@ TEST(CaseSmoke, RollwaveRunsAndWritesItsFigures) {
   EXPECT_NEAR(j["run"]["t_reached"].get<double>(), 0.2, 1e-12);
   EXPECT_LT(std::abs(j["run"]["mass_error"].get<double>()), 1e-12);
   EXPECT_TRUE(fs::exists(dir / "rollwave-8cm.xdmf"));
+  // The paper's measures: (7.12) over the growth window, and the wave over the probe window,
+  // which travels near the exact 2D phase speed at 8 cm (1.138 m/s).
+  EXPECT_TRUE(j["growth_712"]["growth_rate"].is_number()) << j["growth_712"];
+  const auto& wave = j["developed_wave"];
+  EXPECT_GT(wave["height_range"].get<double>(), 0.0);
+  EXPECT_NEAR(wave["wave_speed"].get<double>(), 1.138, 0.05 * 1.138) << wave;
+}
+
+// The 12 cm rollwave from the 2D eigenmode at a small amplitude grows from the start: (7.12) over
+// the smoke window is positive (on this 3.5-cells-per-h0 grid it is no measure of the rate; the
+// full case compares it with the exact 2D theory's 0.974 1/s, docs/paper-cases.md).
+TEST(CaseSmoke, RollwaveFromTheEigenmodeGrowsAtItsRate) {
+  const auto j = run_case("rollwave-12cm-eigenmode", fresh_dir("rollwave_eigen"));
+  EXPECT_EQ(j["run"]["status"], "completed");
+  ASSERT_TRUE(j["growth_712"]["growth_rate"].is_number()) << j["growth_712"];
+  EXPECT_GT(j["growth_712"]["growth_rate"].get<double>(), 0.0);
 }
 
 TEST(CaseSmoke, BadInputIsOneLineExitTwoAndNoOutput) {

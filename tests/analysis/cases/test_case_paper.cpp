@@ -6,7 +6,8 @@
 //  - high-speed (figure 8): the Jop runs are ill posed: they blow up or give grid-dependent flows
 //    (the two resolutions more than 0.1 decade apart in I); the regularised runs converge on the
 //    I_zeta of (6.3) (within 2 %) and agree between resolutions (within 0.01 decade);
-//  - rollwaves (figures 9-12): the runs reach t = 10 s, conserve mass, and grow a wave.
+//  - rollwaves (figures 9-12): the runs reach t = 10 s, conserve mass, and grow a wave;
+//  - figure 13: eigenmode seeding lands nearer the exact 2D theory than the paper's start.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -62,11 +63,31 @@ TEST(PaperCase, HighSpeedRegularisedConvergesOnItsIzeta) {
 }
 
 TEST(PaperCase, RollwavesRunToTenSeconds) {
-  for (const char* name : {"rollwave-8cm", "rollwave-12cm"}) {
+  for (const char* name : {"rollwave-8cm", "rollwave-12cm", "rollwave-12cm-eigenmode"}) {
     const auto j = run_case(name);
     EXPECT_EQ(j["run"]["status"], "completed") << name;
     EXPECT_NEAR(j["run"]["t_reached"].get<double>(), 10.0, 1e-9) << name;
     EXPECT_LT(std::abs(j["run"]["mass_error"].get<double>()), 1e-10) << name;
+  }
+}
+
+// Figure 13: the paper puts the "discrepancies in magnitude" of its 2D growth rates down to its
+// start, a sine whose a0 is close to the saturated amplitude. Checked as that claim: at every
+// length the 2D theory calls unstable, the eigenmode-seeded growth rate is nearer the exact 2D
+// theory than the paper's protocol's (7.12), and the eigenmode protocol is within 10 % from 4 cm
+// on (docs/twod-validation.md; 2 cm is the under-resolved short-wave end).
+TEST(PaperCase, Figure13EigenmodeSeedingIsNearerThe2DTheoryThanThePapersStart) {
+  const auto j = run_case("figure13");
+  for (const auto& p : j["points"]) {
+    const double exact = p["exact_2d"].get<double>();
+    if (!(exact > 0.0)) continue;
+    ASSERT_TRUE(p["eigenmode_vs_2d"].is_number()) << p;
+    ASSERT_TRUE(p["sine_712_vs_2d"].is_number()) << p;
+    EXPECT_LT(std::abs(p["eigenmode_vs_2d"].get<double>()),
+              std::abs(p["sine_712_vs_2d"].get<double>()))
+        << p;
+    if (p["Lx"].get<double>() >= 0.04 - 1e-12)
+      EXPECT_LT(std::abs(p["eigenmode_vs_2d"].get<double>()), 0.10) << p;
   }
 }
 

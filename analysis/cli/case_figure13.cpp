@@ -93,7 +93,9 @@ nlohmann::json point_json(const SweepPoint& sine, const SweepPoint& eigen) {
           {"sine_spectral", number_or_null(sine.growth_rate)},
           {"eigenmode_spectral", number_or_null(eigen.growth_rate)},
           {"eigenmode_vs_2d", number_or_null(relative(eigen.growth_rate, exact_2d))},
-          {"completed", sine.completed && eigen.completed}};
+          {"completed", sine.completed && eigen.completed},
+          {"sine_message", sine.message},  // why a run stopped early (empty for resumed points)
+          {"eigenmode_message", eigen.message}};
 }
 
 }  // namespace

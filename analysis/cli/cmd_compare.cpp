@@ -129,7 +129,8 @@ void add_compare_command(CLI::App& app) {
   add_threads_option(*sub);
   sub->footer(help_footer(
       {"granbench compare --Lx 0.08", "granbench compare --Lx 0.04 --resolution coarse --json",
-       "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5"},
+       "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5",
+       "granbench compare --Lx 0.08 --saturated --threads 1"},
       {0, 2, 3, 130, 143}));
   add_compare_options(*sub, *o);
   auto saturated = std::make_shared<SaturatedOptions>();  // --saturated (compare_saturated.hpp)

@@ -6,10 +6,13 @@
 #include <iomanip>
 #include <iostream>
 #include <mutex>
+#include <numbers>
+#include <stdexcept>
 
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
+#include "analysis/comparison/compare.hpp"
 #include "analysis/comparison/saturated_comparison.hpp"
 #include "common/failure_policy.hpp"
 
@@ -54,8 +57,31 @@ nlohmann::json ratios(const nlohmann::json& depthavg, const nlohmann::json& twod
   return r;
 }
 
-void print_saturated_table(const SaturatedComparison& s, const nlohmann::json& depthavg,
-                           const nlohmann::json& twod, const nlohmann::json& ratio) {
+// The linear theories of the case, whose phase speeds the table shows beside the measured wave
+// speeds. A case with no 2D linear surface mode (e.g. --h0 90 at 8 cm) has no wave to saturate
+// and would run for hours on a meaningless grid; it is refused before any run, as compare
+// refuses it.
+Theories linear_theories(const ChuteCase& chute) {
+  try {
+    return exact_theories(chute);
+  } catch (const std::runtime_error& e) {
+    const double k_hat = 2.0 * std::numbers::pi * chute.h0 / chute.Lx;
+    throw UsageError("--Lx: no 2D linear surface mode to saturate at k_hat = 2 pi h0/Lx = " +
+                     std::to_string(k_hat) + " (" + e.what() + "); choose another --Lx or --h0");
+  }
+}
+
+nlohmann::json theory_json(const Theories& t) {
+  return {{"k_hat", t.k_hat},
+          {"exact_growth_rate", t.exact.growth_rate},
+          {"exact_phase_speed", t.exact.phase_speed},
+          {"exact_2d_growth_rate", number_or_null(t.exact_2d.growth_rate)},
+          {"exact_2d_phase_speed", number_or_null(t.exact_2d.phase_speed)}};
+}
+
+void print_saturated_table(const SaturatedComparison& s, const Theories& theory,
+                           const nlohmann::json& depthavg, const nlohmann::json& twod,
+                           const nlohmann::json& ratio) {
   const ChuteCase& c = s.chute;
   std::cout << std::fixed << std::setprecision(3) << "granbench compare --saturated: Lx = " << c.Lx
             << " m, angle " << c.angle_deg << " deg, h0 = " << c.h0 * 1e3 << " mm, "
@@ -80,6 +106,8 @@ void print_saturated_table(const SaturatedComparison& s, const nlohmann::json& d
     cell(ratio[q.key], 1.0, 16);
     std::cout << "\n";
   }
+  std::cout << "  linear phase speed [m/s]    " << std::setw(12) << theory.exact.phase_speed
+            << std::setw(12) << theory.exact_2d.phase_speed << "   ((7.11) chi = 1; exact 2D)\n";
   for (const auto& [name, j] : {std::pair{"depthavg", &depthavg}, {"twod", &twod}})
     if (!(*j)["reason"].is_null())
       std::cout << "  " << name << ": " << (*j)["reason"].get<std::string>() << "\n";
@@ -118,6 +146,7 @@ void run_compare_saturated(ChuteCase chute, DepthAvgSettings depthavg, const Two
     throw UsageError("--window: must be below t_end = " + std::to_string(chute.t_end) +
                      " s; valid range (0, t_end)");
   depthavg.limiter = true;
+  const Theories theory = linear_theories(chute);
 
   const std::string h5 = output.out.empty() ? "compare_saturated.h5" : output.out;
   const std::string png = output.plot.empty() ? "compare_saturated.png" : output.plot;
@@ -162,11 +191,12 @@ void run_compare_saturated(ChuteCase chute, DepthAvgSettings depthavg, const Two
                 {"depthavg", d},
                 {"twod", t},
                 {"ratio", ratio},
+                {"theory", theory_json(theory)},
                 {"warnings", warnings},
                 {"out", h5},
                 {"plot", png}});
   } else {
-    print_saturated_table(result, d, t, ratio);
+    print_saturated_table(result, theory, d, t, ratio);
     std::cout << "  wrote " << h5 << " and " << png << "\n";
   }
   for (const ModelRun* r : {&result.depthavg, &result.twod}) {

@@ -187,7 +187,9 @@ SaturatedWave measure_saturated_wave(const SurfaceSeries& s, double t_from, doub
   w.front_width = mean_spread(width).mean;
   if (!std::isfinite(w.front_width)) w.reason += "no front (flat profile); ";
 
-  if (w.samples >= 2) {
+  if (!(w.amplitude > 0.0)) {
+    w.wave_speed = kNaN;  // a flat surface has no phase to follow
+  } else if (w.samples >= 2) {
     w.wave_speed = dominant_phase_speed(s, n0, n1, w.speed_mode);
   } else {
     w.wave_speed = kNaN;

@@ -47,7 +47,7 @@ struct SaturatedWave {
   double amplitude_spread = 0.0;    // standard deviation over the window [m]
   double max_slope = 0.0;           // [1]
   double front_width = 0.0;         // [m]
-  double wave_speed = 0.0;          // [m/s]; NaN with fewer than two samples
+  double wave_speed = 0.0;          // [m/s]; NaN with fewer than two samples or a flat surface
   int speed_mode = 0;               // the Fourier mode followed for the speed (1: fundamental)
   double mean_flux = 0.0;           // [m^2/s]; NaN without u_mean
   double mean_depth = 0.0;          // mean h over x and the window [m]

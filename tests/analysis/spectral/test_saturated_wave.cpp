@@ -180,6 +180,7 @@ TEST(SaturatedWave, FlatProfileHasNoFront) {
   EXPECT_EQ(w.amplitude, 0.0);
   EXPECT_EQ(w.max_slope, 0.0);
   EXPECT_TRUE(std::isnan(w.front_width));
+  EXPECT_TRUE(std::isnan(w.wave_speed));
   EXPECT_NE(w.reason.find("flat"), std::string::npos);
 }
 

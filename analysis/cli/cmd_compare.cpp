@@ -17,6 +17,7 @@
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/compare_options.hpp"
 #include "analysis/cli/compare_report.hpp"
+#include "analysis/cli/compare_saturated.hpp"
 #include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
@@ -29,7 +30,7 @@ namespace granbench::cli {
 
 namespace {
 
-void run_compare(const CompareOptions& o) {
+void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   ChuteCase chute = o.flow.chute(o.Lx);
   chute.a0 = o.paper ? 2e-4 : o.a0;
   chute.seed = (o.paper || o.init == "sine") ? Seed::Sine : Seed::Eigenmode;
@@ -54,6 +55,8 @@ void run_compare(const CompareOptions& o) {
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
   depthavg.co_moving = o.frame_speed == "linear";
+  if (saturated.enabled)
+    return run_compare_saturated(chute, depthavg, twod, o.output, saturated, warnings);
 
   const std::string h5 = o.output.out.empty() ? "compare.h5" : o.output.out;
   const std::string png = o.output.plot.empty() ? "compare.png" : o.output.plot;
@@ -126,10 +129,13 @@ void add_compare_command(CLI::App& app) {
   add_threads_option(*sub);
   sub->footer(help_footer(
       {"granbench compare --Lx 0.08", "granbench compare --Lx 0.04 --resolution coarse --json",
-       "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5"},
+       "granbench compare --Lx 0.12 --paper --t-end 10 --out rollwave.h5",
+       "granbench compare --Lx 0.08 --saturated --threads 1"},
       {0, 2, 3, 130, 143}));
   add_compare_options(*sub, *o);
-  sub->callback([o] { run_compare(*o); });
+  auto saturated = std::make_shared<SaturatedOptions>();  // --saturated (compare_saturated.hpp)
+  add_saturated_options(*sub, *saturated);
+  sub->callback([o, saturated] { run_compare(*o, *saturated); });
 }
 
 }  // namespace granbench::cli

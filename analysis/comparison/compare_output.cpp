@@ -62,8 +62,12 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
   out.attribute("theory", "exact_2d_growth_rate", c.theory.exact_2d.growth_rate);
   out.attribute("theory", "exact_2d_phase_speed", c.theory.exact_2d.phase_speed);
   out.attribute("theory", "exact_2d_convergence", c.theory.exact_2d_convergence);
-  // The resolved configuration.
-  const ChuteCase& k = c.chute;
+  write_compare_configuration(out, c.chute, c.base, twod, depthavg);
+  out.close();
+}
+
+void write_compare_configuration(H5Writer& out, const ChuteCase& k, const SteadyState& base,
+                                 const TwodSettings& twod, const DepthAvgSettings& depthavg) {
   const Material& m = k.material;
   write_flow_inputs(out, std::string(curve_name(k.curve)), m, k.angle_deg, k.h0);
   for (auto [name, v] : {std::pair{"Lx", k.Lx},
@@ -74,13 +78,12 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
                          {"depthavg_chi", depthavg.chi},
                          {"depthavg_rtol", depthavg.rtol},
                          {"depthavg_co_moving", depthavg.co_moving ? 1.0 : 0.0},
-                         {"I_zeta", c.base.I_zeta},
-                         {"u_mean", c.base.u_mean},
-                         {"Fr", c.base.Fr}})
+                         {"I_zeta", base.I_zeta},
+                         {"u_mean", base.u_mean},
+                         {"Fr", base.Fr}})
     out.attribute("/", name, v);
   for (const auto& [name, value] : named_values(twod)) out.attribute("/", "twod_" + name, value);
   out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));
-  out.close();
 }
 
 }  // namespace granbench

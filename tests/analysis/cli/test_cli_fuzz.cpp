@@ -40,6 +40,9 @@ const std::vector<Command> kCommands = {
       "--model", "--curve"}},
     {"compare --nx 24 --nz 12 --nx-depthavg 40 --t-end 0.02 --json --quiet",
      {"--angle", "--h0", "--Lx", "--nx", "--nz", "--nx-depthavg", "--t-end", "--a0", "--curve"}},
+    {"compare --saturated --nx 24 --nz 12 --nx-depthavg 40 --t-end 0.1 --window 0.05 --json "
+     "--quiet",
+     {"--window", "--a0", "--init", "--Lx", "--h0", "--dt-out"}},
     {"case --list", {"--resolution", "--jobs"}},
 };
 

@@ -37,6 +37,8 @@ const Case kCases[] = {
     {"run_twod", "run --model twod --nx 40 --nz 16 --t-end 0.02", true},
     {"sweep", "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1", true},
     {"compare", "compare --nx 40 --nz 16 --nx-depthavg 40 --t-end 0.05", true},
+    {"compare_saturated",
+     "compare --saturated --nx 24 --nz 12 --nx-depthavg 40 --t-end 0.1 --window 0.05", true},
     {"case_layer", "case decelerating --resolution smoke", true, "decelerating.h5"},
 };
 

@@ -1,8 +1,6 @@
 // The rollwave cases of `granbench case` (§7, figures 9-12): `granbench run --model twod` with
 // the case file's [run] options in this process, the figures, and the paper's measures of the
 // run: (7.12) over the linear period and the developed wave over the probe window.
-#include <algorithm>
-#include <cmath>
 #include <iostream>
 
 #include "analysis/cli/case_kinds.hpp"
@@ -11,7 +9,7 @@
 #include "analysis/cli/run_model.hpp"
 #include "analysis/cli/run_twod.hpp"
 #include "analysis/spectral/growth_estimator_712.hpp"
-#include "analysis/spectral/wave_speed.hpp"
+#include "analysis/spectral/saturated_wave.hpp"
 #include "common/failure_policy.hpp"
 
 namespace granbench::cli {
@@ -58,26 +56,14 @@ nlohmann::json growth_712_json(const SurfaceSeries& s, double t0, double t1) {
   return j;
 }
 
-// The wave over [t0, t1] (the paper's 8.5-9.1 s): its height range over the whole domain, its
-// largest height, and its speed by cross-correlation of successive samples (wave_speed.hpp).
+// The wave over [t0, t1] (the paper's 8.5-9.1 s), measured as compare --saturated measures both
+// models (saturated_wave.hpp): amplitude, steepest slope, front width, speed and flux.
 nlohmann::json developed_wave_json(const SurfaceSeries& s, double t0, double t1) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (std::size_t n = 0; n < s.nt(); ++n) {
-    if (s.t[n] < t0 || s.t[n] > t1) continue;
-    for (double h : s.h_at(n)) lo = std::min(lo, h), hi = std::max(hi, h);
+  try {
+    return to_json(measure_saturated_wave(s, t0, t1));
+  } catch (const std::invalid_argument& e) {
+    return {{"t_from", t0}, {"t_to", t1}, {"reason", e.what()}};
   }
-  nlohmann::json j = {{"window", {t0, t1}}};
-  if (!(hi >= lo)) {
-    j["reason"] = "no sample in the window";
-    return j;
-  }
-  const WaveSpeed c = wave_speed(s, t0, t1);
-  j.update({{"h_min", lo},
-            {"h_max", hi},
-            {"height_range", hi - lo},
-            {"wave_speed", c.pairs > 0 ? nlohmann::json(c.speed) : nlohmann::json(nullptr)},
-            {"wave_speed_spread", c.spread}});
-  return j;
 }
 
 }  // namespace

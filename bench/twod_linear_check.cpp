@@ -16,7 +16,8 @@
 //     rheology=mui|newton nu=<m^2/s> zeta=28.5 h0=0.004 Lx=0.08 Lz=2 (in h0) nx=160 nz=32
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
-//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 interface_p=cell|extrapolated
+//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=0
+//     interface_p=cell|extrapolated
 //     (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
@@ -139,6 +140,7 @@ int main(int argc, char** argv) {
                                 ? twod::InterfacePressure::Extrapolated
                                 : twod::InterfacePressure::CellAverage;
   params.cfl = a.num("cfl", params.cfl);
+  rh.surface_row_shear_spacing = a.num("row_shear", rh.surface_row_shear_spacing ? 1 : 0) != 0;
   params.dt_max = a.num("dt_max", params.dt_max);
   params.advect_momentum = a.num("advect_momentum", 1) != 0;
   params.viscosity_passes = int(a.num("passes", params.viscosity_passes));

@@ -36,10 +36,10 @@ struct Grid {
 
 // The domain height, close to Lz_over_h0 h0, that puts a surface of height h0 in the middle of a
 // cell of an nz-cell column: h0 = (n - 1/2) dz with n = round(nz / Lz_over_h0). The 2D growth rate
-// depends on where the surface sits in its cell, to first order in dz (surface on a face, 1/4,
-// 1/2, 3/4 of a cell: 0.99, 0.99, 1.05, 1.11 1/s for the §7 case at 32 cells per h0); mid-cell is
-// the centre of that sawtooth, where the growth converges to the theory, and the default grids
-// use it so that their results do not depend on h0/dz (docs/twod-validation.md §4).
+// depends on where the surface sits in its cell (surface on a face, 1/4, 1/2, 3/4 of a cell:
+// 1.03, 1.06, 1.04, 1.02 1/s for the §7 case at 32 cells per h0 with the default surface-row
+// force; 0.99, 0.99, 1.05, 1.11 with the standard MAC force); the default grids use mid-cell so
+// that their results do not depend on h0/dz (docs/twod-validation.md §4).
 inline double mid_cell_domain_height(double h0, int nz, double Lz_over_h0 = 2.0) {
   const double n = static_cast<double>(static_cast<long>(nz / Lz_over_h0 + 0.5));
   return nz * h0 / (n - 0.5);

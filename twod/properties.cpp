@@ -31,6 +31,13 @@
 // interface cells and at interface corners with the overburden pressure interpolated to the
 // surface height of the columns, and treats an interface corner as granular below that height
 // and as light fluid above it.
+// Rheology::surface_row_shear_spacing (an option, with Extrapolated): the u of a partly filled
+// surface row (fraction f) is the velocity of its grains, at their centroid (k + f/2) dz, not at
+// the row's centre, so the shear rate at the granular corner below it is
+// (u_k - u_{k-1}) / ((1 + f) dz / 2), not / dz. The corner's eta follows from that gamma, and
+// eta and its tangent are scaled by 2 / (1 + f) so that the stencil's difference over dz gives
+// the stress. The scale also multiplies the corner's dw/dx part of tau_xz (an approximation,
+// small in a shallow wave). docs/twod-validation.md §4 has what it does to the growth rate.
 // Threads: the grid loops are parallel over rows; each value is written once, by the same
 // arithmetic for any thread count (parallel.hpp).
 #include "twod/properties.hpp"
@@ -209,6 +216,20 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
         // an interface corner is granular when it lies below the surface of its two columns,
         // with the overburden pressure there; light fluid otherwise (no mixing)
         const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]);
+        const double f_above = 0.5 * (f[c] + f[d]);
+        if (model.rheology().surface_row_shear_spacing && k * g.dz < h && f_above < 1.0) {
+          // below a partly filled row: gamma over the distance (1 + f) dz / 2 from the row
+          // below's centre to the centroid of the row's grains, where its u lives; the corner
+          // viscosity carries dz / that distance so that the stencil's gamma gives the stress
+          const double scale = 2.0 / (1.0 + std::max(f_above, 0.0));
+          const double dxz_s = dxz * scale;
+          const double D_s = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz_s * dxz_s);
+          set_eta(1.0, p_granular(i, k * g.dz, true), D_s, share(dxz_s * dxz_s, D_s * D_s),
+                  props.eta_n[n], props.eta_n_tangent[n]);
+          props.eta_n[n] *= scale;
+          props.eta_n_tangent[n] *= scale;
+          continue;
+        }
         set_eta(k * g.dz < h ? 1.0 : 0.0, p_granular(i, k * g.dz, true), D, shear_share,
                 props.eta_n[n], props.eta_n_tangent[n]);
         continue;

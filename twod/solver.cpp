@@ -102,12 +102,11 @@ double Solver::step(double dt_limit) {
   const bool shortened = dt < dt_full;
   // r = dt_n / dt_{n-1} of the steps actually taken (Adams-Bashforth)
   const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;
-  // 1. interface; the column heights before and after feed the hydrostatic parts of step 2
-  const bool need_heights = params_.hydrostatic_viscosity_pressure || params_.surface_row_pressure;
+  // 1. interface; the column heights before and after feed eta's hydrostatic pressure in step 2
   if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
   if (params_.advect_interface)
     advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
-  if (need_heights) h_after_ = surface_heights(g_, s_.f);
+  if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
   //    (surface_row_pressure.cpp)
@@ -118,7 +117,7 @@ double Solver::step(double dt_limit) {
   else
     update_viscosity(g_, s_, model_, props_);
   if (params_.surface_row_pressure)
-    force_u_ = surface_row_pressure_correction(g_, params_, s_.f, h_after_);
+    force_u_ = surface_row_pressure_correction(g_, params_, s_.f);
   else
     force_u_.clear();
   // 3. momentum predictor

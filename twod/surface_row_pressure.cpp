@@ -14,53 +14,71 @@
 // where the surface sits in its cell, and the 2D growth rate followed it (docs/twod-validation.md
 // §4).
 //
-// The correction replaces, on every u-face, the standard force of the discrete hydrostatic
-// pressure by the exact hydrostatic force on the face's control volume:
+// The correction replaces, on every u-face, the force of the discrete hydrostatic pressure P
+// (integrated down from p = 0 at the top with the projection's face densities) by the force of
+// the hydrostatic pressure of the grains where they actually sit in the face's row, both
+// integrated over the face's height [k dz, (k+1) dz]:
 //
-//   exact     -(rho_g - rho_l) g cos(zeta) (h_i - h_{i-1}) f_face dz    (p_hs of two layers,
-//             d p_hs / dx = (rho_g - rho_l) g cos(zeta) dh/dx below the surface, 0 above;
-//             f_face dz of the face's height is below it)
-//   standard  -dz (P_{i,k} - P_{i-1,k}),  P the discrete hydrostatic pressure of each column,
-//             integrated down from p = 0 at the top with the projection's face densities.
+//   F_face = -int_row (p_i(z) - p_{i-1}(z)) dz,   p_i(z) = g cos(zeta) int_z^Lz rho_i(z') dz'.
 //
-// Both depend on f and the column heights h = sum f dz only, continuously, so the correction
-// varies smoothly as the surface crosses a face, and it vanishes on full and empty faces (the
-// discrete hydrostatic pressure is exact in full cells). The dynamic pressure keeps the standard
-// force, and the projection is unchanged (its increment keeps the standard gradient). An earlier
-// form took the correction from the actual pressure of the rows above and below; it jumped when
-// the surface crossed a face and made the Picard passes stop converging.
+// With rho = rho_l + (rho_g - rho_l) phi (phi the grain indicator) the light fluid's share and
+// the weight of the rows above cancel between exact and discrete (P_k carries the rows above
+// exactly, and half of its own cell's grains), and what is left per column is the first moment
+// of the row's own grains about the cell centre z_c:
+//
+//   int_row (p_exact - P) dz = (rho_g - rho_l) g cos(zeta) f dz (z_g - z_c),
+//
+// z_g the centroid height of the grains in the cell. For grains lying at the bottom of the cell
+// (a surface with full cells below and empty above), z_g - z_c = -(1 - f) dz / 2; lying at its
+// top (the underside of an overhang) +(1 - f) dz / 2. Which of the two is told by the cells above
+// and below, s = f_{k-1} - f_{k+1} in [-1, 1] (1 at a surface that is a graph h(x); 0 for a wisp
+// or droplet with nothing around, which keeps the standard force), so
+//
+//   correction_{i,k} = (rho_g - rho_l) g cos(zeta) (dz^2 / 2) [m_i - m_{i-1}],
+//   m = s f (1 - f),
+//
+// (the bed counts as full, the open top as empty). For a graph surface whose two columns share
+// the row (f_i dz = h_i - k dz) this is exactly the hydrostatic force on the face's grains,
+// -(rho_g - rho_l) g cos(zeta) f_face dz (h_i - h_{i-1}); where the surface crosses a face between
+// the columns it is the integral of the two columns' hydrostatic pressures over the face.
+//
+// Why local. An earlier form took the exact force from the column heights h = sum f dz,
+// -(rho_g - rho_l) g cos(zeta) f_face dz (h_i - h_{i-1}), on every partly filled face. That
+// assumes a surface that is a graph with both columns' surfaces in the face's row. At a steep
+// front (a step of several cells) it spread the step's force evenly over the rows, which pushed
+// the top of the front forward and its foot back; under the overhang that followed, it took away
+// from near-empty light-fluid faces (mass ~rho_l dx dz) a pressure force that the actual pressure
+// balanced, so they were driven at ~10^3-10^4 m/s^2. The coarse nonlinear rollwave (64 x 16,
+// a0 = 0.2 mm) then sprayed grains to the top of the domain and diverged at 0.44 s
+// (docs/twod-validation.md §4). The present form depends on the face's row and its neighbours
+// only, is a smooth function of f (zero on full and empty cells), and needs no graph.
 #include "twod/surface_row_pressure.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granbench::twod {
 
 std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
-                                                    const std::vector<double>& f,
-                                                    const std::vector<double>& h) {
+                                                    const std::vector<double>& f) {
   const double g_cos = params.rheology.material.g * std::cos(params.zeta);
-  const double rho_g = params.rheology.material.bulk_density(), rho_l = params.rheology.rho_light;
-  auto rho = [&](double fr) { return fr * rho_g + (1.0 - fr) * rho_l; };
-  // the discrete hydrostatic pressure of each column (the projection's balance, properties.cpp's
-  // face densities): half a cell below the top at the top face's density, then one face a cell
-  std::vector<double> P(g.cells());
-  for (int i = 0; i < g.nx; ++i) {
-    double pk = g_cos * rho(f[g.at(i, g.nz - 1)]) * 0.5 * g.dz;
-    P[g.at(i, g.nz - 1)] = pk;
-    for (int k = g.nz - 1; k > 0; --k) {
-      pk += g_cos * rho(0.5 * (f[g.at(i, k - 1)] + f[g.at(i, k)])) * g.dz;
-      P[g.at(i, k - 1)] = pk;
-    }
-  }
-  std::vector<double> correction(g.cells(), 0.0);
+  const double drho = params.rheology.material.bulk_density() - params.rheology.rho_light;
+  // m = s f (1 - f): the grains' first moment about the cell centre, in units of -dz/2
+  std::vector<double> m(g.cells());
+#pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
   for (int k = 0; k < g.nz; ++k)
     for (int i = 0; i < g.nx; ++i) {
-      const double f_face = 0.5 * (f[g.at(i - 1, k)] + f[g.at(i, k)]);
-      if (!(f_face > 0.0 && f_face < 1.0)) continue;  // zero to round-off there anyway
-      const double exact = -(rho_g - rho_l) * g_cos * (h[i] - h[g.wrap(i - 1)]) * f_face * g.dz;
-      const double standard = -g.dz * (P[g.at(i, k)] - P[g.at(i - 1, k)]);
-      correction[g.at(i, k)] = exact - standard;
+      const double fc = f[g.at(i, k)];
+      const double below = k > 0 ? f[g.at(i, k - 1)] : 1.0;         // the bed counts as full
+      const double above = k + 1 < g.nz ? f[g.at(i, k + 1)] : 0.0;  // the open top as empty
+      m[g.at(i, k)] = std::clamp(below - above, -1.0, 1.0) * fc * (1.0 - fc);
     }
+  const double scale = drho * g_cos * 0.5 * g.dz * g.dz;
+  std::vector<double> correction(g.cells());
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i)
+      correction[g.at(i, k)] = scale * (m[g.at(i, k)] - m[g.at(i - 1, k)]);
   return correction;
 }
 

@@ -10,10 +10,8 @@ namespace granbench::twod {
 
 // The correction, per u-face [N per unit width], to add to the predictor's pressure force
 // -dz (p_i - p_{i-1}) so that a partly filled u-face feels the hydrostatic force on the grains it
-// holds; zero on full and empty faces. f: the volume fractions of the new level, h their column
-// heights (surface_heights).
+// holds; zero where both cells are full or empty. f: the volume fractions of the new level.
 std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
-                                                    const std::vector<double>& f,
-                                                    const std::vector<double>& h);
+                                                    const std::vector<double>& f);
 
 }  // namespace granbench::twod

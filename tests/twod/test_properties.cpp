@@ -3,6 +3,7 @@
 // and both mixing rules at f = 0, 1/2, 1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "twod/properties.hpp"
@@ -43,4 +44,35 @@ TEST(Properties, MixingRules) {
   EXPECT_DOUBLE_EQ(h.mix(1.0, 0.5), 0.5);
   EXPECT_DOUBLE_EQ(h.mix(0.0, 0.5), 1e-3);
   EXPECT_NEAR(h.mix(0.5, 0.5), 1.0 / (0.5 / 0.5 + 0.5 / 1e-3), 1e-15);
+}
+
+// Rheology::surface_row_shear_spacing: with a Newtonian granular phase the corner below a partly
+// filled surface row (fraction f) carries 2/(1 + f) times the viscosity, so that the stencil's
+// (u_k - u_{k-1})/dz gives the stress of the shear over the distance (1 + f) dz / 2 to the
+// grains' centroid; corners below full rows keep theirs, and the scale tends to 1 as f -> 1.
+TEST(Properties, SurfaceRowShearSpacingScalesTheCornerBelowAPartlyFilledRow) {
+  const Grid g(4, 8, 0.004, 0.008);  // dz = 1 mm
+  for (double fill : {0.25, 0.5, 0.75, 0.999}) {
+    Fields s(g);
+    for (int k = 0; k < g.nz; ++k)
+      for (int i = 0; i < g.nx; ++i) {
+        s.f[g.at(i, k)] = k < 3 ? 1.0 : (k == 3 ? fill : 0.0);
+        s.u[g.at(i, k)] = 0.1 * g.zc(k);
+        s.p[g.at(i, k)] = std::max(3.0 + fill - (k + 0.5), 0.0) * 30.0;
+      }
+    Rheology r;
+    r.newtonian_eta = 0.01;
+    const ViscosityModel plain(r);
+    r.surface_row_shear_spacing = true;
+    const ViscosityModel spaced(r);
+    Properties a(g), b(g);
+    update_viscosity(g, s, plain, a);
+    update_viscosity(g, s, spaced, b);
+    for (int i = 0; i < g.nx; ++i) {
+      EXPECT_NEAR(b.eta_n[g.at(i, 3)], 2.0 / (1.0 + fill) * a.eta_n[g.at(i, 3)], 1e-14) << fill;
+      EXPECT_NEAR(b.eta_n_tangent[g.at(i, 3)], 2.0 / (1.0 + fill) * a.eta_n_tangent[g.at(i, 3)],
+                  1e-14);
+      for (int k : {1, 2, 4}) EXPECT_EQ(b.eta_n[g.at(i, k)], a.eta_n[g.at(i, k)]) << k;
+    }
+  }
 }

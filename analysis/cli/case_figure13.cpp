@@ -94,7 +94,8 @@ nlohmann::json point_json(const SweepPoint& sine, const SweepPoint& eigen) {
           {"eigenmode_spectral", number_or_null(eigen.growth_rate)},
           {"eigenmode_vs_2d", number_or_null(relative(eigen.growth_rate, exact_2d))},
           {"completed", sine.completed && eigen.completed},
-          {"sine_message", sine.message},  // why a run stopped early (empty for resumed points)
+          {"sine_message",
+           sine.message},  // what stopped the run or its fit (not stored: empty when resumed)
           {"eigenmode_message", eigen.message}};
 }
 

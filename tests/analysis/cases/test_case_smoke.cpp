@@ -75,7 +75,12 @@ TEST(CaseSmoke, Figure13RunsBothProtocolsBesideTheTheories) {
   const auto j2 = nlohmann::json::parse(again.out);
   EXPECT_EQ(j["points_resumed"], 0);
   EXPECT_EQ(j2["points_resumed"], 4);
-  EXPECT_EQ(j2["points"], j["points"]);
+  // The same numbers (the messages of the runs are not stored, so resumed points have none).
+  auto numbers = [](nlohmann::json points) {
+    for (auto& p : points) p.erase("sine_message"), p.erase("eigenmode_message");
+    return points;
+  };
+  EXPECT_EQ(numbers(j2["points"]), numbers(j["points"]));
 }
 
 TEST(CaseSmoke, WellposedGivesTheNeutralPointsOfBothCurves) {

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_granbench.hpp"
@@ -20,12 +21,17 @@ namespace {
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
 
-nlohmann::json run_case(const std::string& name) {
+// `stopped_runs_allowed`: a case whose claim is judged on the runs that completed may exit with
+// the failure policy's 3 (a run stopped early) and still be checked.
+nlohmann::json run_case(const std::string& name, bool stopped_runs_allowed = false) {
   const fs::path dir = fs::temp_directory_path() / ("granbench_paper_" + name);
   fs::remove_all(dir);
   const auto r =
       run_granbench("case " + name + " --json --quiet --out-dir " + dir.string(), "paper_" + name);
-  EXPECT_EQ(r.code, 0) << r.err;
+  if (stopped_runs_allowed && r.code == 3)
+    std::cout << name << ": some runs stopped early\n" << r.err;
+  else
+    EXPECT_EQ(r.code, 0) << r.err;
   return nlohmann::json::parse(r.out);
 }
 
@@ -77,12 +83,14 @@ TEST(PaperCase, RollwavesRunToTenSeconds) {
 // eigenmode-seeded 2D wave grows, and nearer the exact 2D theory's rate than the paper's protocol's
 // (7.12) where that one was measured (a sine run that stops early has none).
 TEST(PaperCase, Figure13EigenmodeSeedingIsNearerThe2DTheoryThanThePapersStart) {
-  const auto j = run_case("figure13");
+  // The paper's start stops the long 2D runs early (docs/paper-cases.md): judged where it ran.
+  const auto j = run_case("figure13", true);
   int compared = 0;
   for (const auto& p : j["points"]) {
     const double exact = p["exact_2d"].get<double>();
     if (!(exact > 0.0)) continue;
     ASSERT_TRUE(p["eigenmode_vs_2d"].is_number()) << p;
+    EXPECT_TRUE(p["eigenmode_message"].get<std::string>().empty()) << p;  // every one completes
     EXPECT_GT(p["eigenmode_spectral"].get<double>(), 0.0) << p;
     if (!p["sine_712_vs_2d"].is_number()) continue;
     ++compared;

@@ -32,6 +32,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "analysis/linear2d/base_state.hpp"
@@ -44,6 +45,7 @@
 #include "twod/initial_state.hpp"
 #include "twod/run.hpp"
 #include "twod/solver.hpp"
+#include "twod/viscosity_mixing.hpp"
 
 using namespace granbench;
 using cd = std::complex<double>;
@@ -133,8 +135,10 @@ int main(int argc, char** argv) {
   rh.D_min = a.num("D_min", rh.D_min);
   rh.rho_light = a.num("rho_light", rh.rho_light);
   rh.eta_light = a.num("eta_light", rh.eta_light);
-  rh.mixing = a.str("mixing", "arithmetic") == "harmonic" ? twod::ViscosityMixing::Harmonic
-                                                          : twod::ViscosityMixing::Arithmetic;
+  if (const auto rule = twod::viscosity_mixing_from_name(a.str("mixing", "arithmetic")))
+    rh.mixing = *rule;
+  else
+    throw std::invalid_argument("mixing: valid values arithmetic, harmonic");
   if (a.kv.count("interface_p"))
     rh.interface_pressure = a.str("interface_p", "") == "extrapolated"
                                 ? twod::InterfacePressure::Extrapolated

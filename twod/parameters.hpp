@@ -94,9 +94,6 @@ struct SolverParams {
   //     surface move (viscosity_pressure.cpp; false: p* = p^n, lagged one step).
   // Each lag is a first-order time error of the growth rate (docs/twod-validation.md).
   bool viscosity_tangent = true;
-  // Time weight of the implicit stress (with the tangent): 1 = backward Euler, 1/2 =
-  // Crank-Nicolson.
-  double viscous_theta = 1.0;
   bool hydrostatic_viscosity_pressure = true;
   // true (default): the u-faces of a partly filled surface row feel the hydrostatic pressure force
   // on the grains they hold, not the half-slope force of the interface cells' centroid pressure
@@ -114,10 +111,6 @@ struct SolverParams {
   // false = forward Euler (u^n . grad u^n), whose anti-diffusion (U^2 dt/2) d2/dx2 makes the
   // weakly damped surface-layer shear modes (lambda ~ 6 mm) grow (docs/twod-validation.md).
   bool advection_ab2 = true;
-  // Velocity that carries the interface over a step: true = time-centred, extrapolated to
-  // t^{n+1/2} from the last two levels, (1 + r/2) u^n - (r/2) u^{n-1} (divergence-free, as both
-  // levels are); false = u^n (first order in time).
-  bool vof_centred_velocity = false;
   bool advect_interface = true;
   // OpenMP threads of the solver's loops (parallel.hpp); results do not depend on it. The
   // default is the thread count of the thread that makes these parameters (OMP_NUM_THREADS, or

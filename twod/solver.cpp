@@ -104,24 +104,8 @@ double Solver::step(double dt_limit) {
   const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;
   // 1. interface; the column heights before and after feed eta's hydrostatic pressure in step 2
   if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
-  if (params_.advect_interface) {
-    if (params_.vof_centred_velocity && !u_old_.empty() && r > 0.0) {
-      vof_u_.resize(s_.u.size());
-      vof_w_.resize(s_.w.size());
-      const long nu = long(vof_u_.size()), nw = long(vof_w_.size());
-#pragma omp parallel for schedule(static)
-      for (long n = 0; n < nu; ++n) vof_u_[n] = (1.0 + 0.5 * r) * s_.u[n] - 0.5 * r * u_old_[n];
-#pragma omp parallel for schedule(static)
-      for (long n = 0; n < nw; ++n) vof_w_[n] = (1.0 + 0.5 * r) * s_.w[n] - 0.5 * r * w_old_[n];
-      advect_volume_fraction(g_, vof_u_, vof_w_, dt, stats_.steps % 2 == 0, s_.f, vof_);
-    } else {
-      advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
-    }
-    if (params_.vof_centred_velocity) {
-      u_old_ = s_.u;
-      w_old_ = s_.w;
-    }
-  }
+  if (params_.advect_interface)
+    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force

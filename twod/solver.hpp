@@ -87,7 +87,6 @@ class Solver {
   VofStats vof_;
   Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
-  std::vector<double> vof_u_, vof_w_, u_old_, w_old_;  // u^{n+1/2} for the interface; u^{n-1}
   std::vector<double> adv_u_old_, adv_w_old_;  // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_, h_after_;     // column heights before and after the VOF step
   std::vector<double> force_u_;                // surface-row pressure correction per u-face

@@ -40,7 +40,6 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
       kind_(params.viscous_solver),
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
-      theta_(params.viscous_theta),
       op_(g),
       explicit_stress_(g),
       solver_(params.viscous_solver, params.viscous_tolerance) {}
@@ -52,13 +51,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   const Grid& g = g_;
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
-  if (tangent_) {
-    theta_c_.resize(props.eta_c.size());
-    theta_n_.resize(props.eta_n.size());
-    for (std::size_t c = 0; c < theta_c_.size(); ++c) theta_c_[c] = theta_ * props.eta_c_tangent[c];
-    for (std::size_t c = 0; c < theta_n_.size(); ++c) theta_n_[c] = theta_ * props.eta_n_tangent[c];
-    op_.set(props, theta_c_, theta_n_, dt);
-  } else
+  if (tangent_)
+    op_.set(props, props.eta_c_tangent, props.eta_n_tangent, dt);
+  else
     op_.set(props, dt);
   // Initial guess u^n + (dt/dt_prev)(u* - u^n)_prev: the predictor increment changes slowly
   // from step to step, and starting from it halves the iterations against starting from u^n.
@@ -99,8 +94,10 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = at.w[g.at(i, k)];
     lagged_c_.resize(props.eta_c.size());
     lagged_n_.resize(props.eta_n.size());
-    for (std::size_t c = 0; c < lagged_c_.size(); ++c) lagged_c_[c] = props.eta_c[c] - theta_c_[c];
-    for (std::size_t c = 0; c < lagged_n_.size(); ++c) lagged_n_[c] = props.eta_n[c] - theta_n_[c];
+    for (std::size_t c = 0; c < lagged_c_.size(); ++c)
+      lagged_c_[c] = props.eta_c[c] - props.eta_c_tangent[c];
+    for (std::size_t c = 0; c < lagged_n_.size(); ++c)
+      lagged_n_[c] = props.eta_n[c] - props.eta_n_tangent[c];
     explicit_stress_.set_stress(lagged_c_, lagged_n_);
     explicit_stress_.apply(x_old_, y_);
     b_ -= y_;

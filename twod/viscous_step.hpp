@@ -39,9 +39,7 @@ class ViscousStep {
   double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
   LinearSolverKind kind_;
   double tol_;
-  bool tangent_;
-  double theta_;
-  std::vector<double> theta_c_, theta_n_;  // SolverParams::viscosity_tangent
+  bool tangent_;  // SolverParams::viscosity_tangent
   ViscousOperator op_;
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners

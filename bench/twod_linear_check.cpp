@@ -149,6 +149,7 @@ int main(int argc, char** argv) {
   params.advect_momentum = a.num("advect_momentum", 1) != 0;
   params.viscosity_passes = int(a.num("passes", params.viscosity_passes));
   params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
+  params.consistent_momentum = a.num("consistent", params.consistent_momentum ? 1 : 0) != 0;
   params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;
   params.hydrostatic_viscosity_pressure =
       a.num("hydro_p", params.hydrostatic_viscosity_pressure ? 1 : 0) != 0;

@@ -6,10 +6,16 @@
 // advected component q reconstructed upwind with a van Leer-limited slope (second order where
 // smooth, no new extrema; stable for the Courant numbers < 1/2 the VOF already imposes). The
 // - q div(u) term removes the discrete divergence of the averaged advecting field.
+//
+// The consistent form (the solver's default) carries q with the mass fluxes G of the step's VOF
+// advection instead of the velocity:  A = [div(G q) - q div(G)] / (rho^n - dt div(G)),  so that
+// rho^{n+1} (u^n - dt A) = rho^n u^n - dt div(G q): the discrete momentum balance of the mass
+// that the VOF step moved (Rudman 1997; Arrufat et al. 2021 on staggered grids).
 // Boundaries: no flux through the bed; at the top q is extended with zero gradient.
 #include "twod/momentum_advection.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace granbench::twod {
 
@@ -19,21 +25,43 @@ double van_leer(double a, double b) {
 }
 
 // Upwind-reconstructed face value between q1 (behind) and q2 (ahead) for velocity V, with q0
-// before q1 and q3 after q2.
-double upwind(double V, double q0, double q1, double q2, double q3) {
-  if (V >= 0.0) return q1 + 0.5 * van_leer(q1 - q0, q2 - q1);
-  return q2 - 0.5 * van_leer(q2 - q1, q3 - q2);
+// before q1 and q3 after q2. With c = |V| dt / h > 0 the slope is taken at the middle of the
+// step, (1 - c)/2 instead of 1/2 (MUSCL-Hancock, the advective part of BCG's face values): the
+// one-step update of one-dimensional advection is then second order in time, without forward
+// Euler's anti-diffusion (U^2 dt/2) d2/dx2.
+double upwind(double V, double q0, double q1, double q2, double q3, double c = 0.0) {
+  const double half = 0.5 * (1.0 - c);
+  if (V >= 0.0) return q1 + half * van_leer(q1 - q0, q2 - q1);
+  return q2 - half * van_leer(q2 - q1, q3 - q2);
 }
-}  // namespace
 
-void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv_u,
-                        std::vector<double>& adv_w) {
+// What enters a control volume per unit volume and time through its two faces along one
+// direction (carriers at the lower and upper face, spacing h).
+double inflow(double lower, double upper, double h) {
+  return (std::max(lower, 0.0) + std::max(-upper, 0.0)) / h;
+}
+
+// The flux form on both staggered control volumes. The carriers cx(i, k), cz(i, k) give what
+// crosses x-face (i, k) and z-face (i, k) per unit area and time: the velocity itself (the
+// velocity form) or the mass flux (the consistent form); the control volume's fluxes are their
+// averages, upwinded by the averaged velocity. Each value is
+//   (sum of carrier q over the faces - q_P sum of carriers) / norm(P, sum of carriers, inflow).
+template <class CarrierX, class CarrierZ, class Norm>
+void flux_form(const Grid& g, const Fields& s, CarrierX&& cx, CarrierZ&& cz, Norm&& norm_u,
+               Norm&& norm_w, double dt_centre, std::vector<double>& adv_u,
+               std::vector<double>& adv_w) {
+  // Courant numbers of the time-centred face values (0: the plain upwind slope)
+  const double cxr = dt_centre / g.dx, czr = dt_centre / g.dz;
+  auto cx_of = [&](double V) { return std::abs(V) * cxr; };
+  auto cz_of = [&](double V) { return std::abs(V) * czr; };
   const int nx = g.nx, nz = g.nz;
   const auto &u = s.u, &w = s.w;
   adv_u.assign(g.cells(), 0.0);
   adv_w.assign(g.w_faces(), 0.0);
   auto U = [&](int i, int k) { return u[g.at(i, std::clamp(k, 0, nz - 1))]; };
   auto W = [&](int i, int k) { return w[g.at(i, std::clamp(k, 0, nz))]; };
+  auto CX = [&](int i, int k) { return cx(g.wrap(i), std::clamp(k, 0, nz - 1)); };
+  auto CZ = [&](int i, int k) { return cz(g.wrap(i), std::clamp(k, 0, nz)); };
 
   // x-momentum on the control volume of u-face (i, k). (Rows in parallel: each entry is written
   // once; parallel.hpp.)
@@ -42,16 +70,23 @@ void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv
     for (int i = 0; i < nx; ++i) {
       // x-fluxes at cell centres i-1 (left) and i (right)
       const double Vl = 0.5 * (U(i - 1, k) + U(i, k)), Vr = 0.5 * (U(i, k) + U(i + 1, k));
-      const double ql = upwind(Vl, U(i - 2, k), U(i - 1, k), U(i, k), U(i + 1, k));
-      const double qr = upwind(Vr, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k));
+      const double Cl = 0.5 * (CX(i - 1, k) + CX(i, k)), Cr = 0.5 * (CX(i, k) + CX(i + 1, k));
+      const double ql = upwind(Vl, U(i - 2, k), U(i - 1, k), U(i, k), U(i + 1, k), cx_of(Vl));
+      const double qr = upwind(Vr, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(Vr));
       // z-fluxes at corners (i, k) (bottom) and (i, k+1) (top)
       const double Wb = k == 0 ? 0.0 : 0.5 * (W(i - 1, k) + W(i, k));
       const double Wt = 0.5 * (W(i - 1, k + 1) + W(i, k + 1));
-      const double qb = k == 0 ? 0.0 : upwind(Wb, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1));
-      const double qt =
-          k == nz - 1 ? U(i, k) : upwind(Wt, U(i, k - 1), U(i, k), U(i, k + 1), U(i, k + 2));
-      const double div = (Vr - Vl) / g.dx + (Wt - Wb) / g.dz;
-      adv_u[g.at(i, k)] = (Vr * qr - Vl * ql) / g.dx + (Wt * qt - Wb * qb) / g.dz - U(i, k) * div;
+      const double Cb = k == 0 ? 0.0 : 0.5 * (CZ(i - 1, k) + CZ(i, k));
+      const double Ct = 0.5 * (CZ(i - 1, k + 1) + CZ(i, k + 1));
+      const double qb =
+          k == 0 ? 0.0 : upwind(Wb, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1), cz_of(Wb));
+      const double qt = k == nz - 1
+                            ? U(i, k)
+                            : upwind(Wt, U(i, k - 1), U(i, k), U(i, k + 1), U(i, k + 2), cz_of(Wt));
+      const double div = (Cr - Cl) / g.dx + (Ct - Cb) / g.dz;
+      const double flux = (Cr * qr - Cl * ql) / g.dx + (Ct * qt - Cb * qb) / g.dz;
+      const double in = inflow(Cl, Cr, g.dx) + inflow(Cb, Ct, g.dz);
+      adv_u[g.at(i, k)] = (flux - U(i, k) * div) / norm_u(g.at(i, k), div, in);
     }
     // z-momentum on the control volume of interior w-face (i, k).
 #pragma omp parallel for schedule(static)
@@ -59,15 +94,59 @@ void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv
     for (int i = 0; i < nx; ++i) {
       // x-fluxes at corners (i, k) (left) and (i+1, k) (right)
       const double Vl = 0.5 * (U(i, k - 1) + U(i, k)), Vr = 0.5 * (U(i + 1, k - 1) + U(i + 1, k));
-      const double ql = upwind(Vl, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k));
-      const double qr = upwind(Vr, W(i - 1, k), W(i, k), W(i + 1, k), W(i + 2, k));
+      const double Cl = 0.5 * (CX(i, k - 1) + CX(i, k)),
+                   Cr = 0.5 * (CX(i + 1, k - 1) + CX(i + 1, k));
+      const double ql = upwind(Vl, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(Vl));
+      const double qr = upwind(Vr, W(i - 1, k), W(i, k), W(i + 1, k), W(i + 2, k), cx_of(Vr));
       // z-fluxes at cell centres k-1 (bottom) and k (top)
       const double Wb = 0.5 * (W(i, k - 1) + W(i, k)), Wt = 0.5 * (W(i, k) + W(i, k + 1));
-      const double qb = upwind(Wb, W(i, k - 2), W(i, k - 1), W(i, k), W(i, k + 1));
-      const double qt = upwind(Wt, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2));
-      const double div = (Vr - Vl) / g.dx + (Wt - Wb) / g.dz;
-      adv_w[g.at(i, k)] = (Vr * qr - Vl * ql) / g.dx + (Wt * qt - Wb * qb) / g.dz - W(i, k) * div;
+      const double Cb = 0.5 * (CZ(i, k - 1) + CZ(i, k)), Ct = 0.5 * (CZ(i, k) + CZ(i, k + 1));
+      const double qb = upwind(Wb, W(i, k - 2), W(i, k - 1), W(i, k), W(i, k + 1), cz_of(Wb));
+      const double qt = upwind(Wt, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(Wt));
+      const double div = (Cr - Cl) / g.dx + (Ct - Cb) / g.dz;
+      const double flux = (Cr * qr - Cl * ql) / g.dx + (Ct * qt - Cb * qb) / g.dz;
+      const double in = inflow(Cl, Cr, g.dx) + inflow(Cb, Ct, g.dz);
+      adv_w[g.at(i, k)] = (flux - W(i, k) * div) / norm_w(g.at(i, k), div, in);
     }
+}
+}  // namespace
+
+void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv_u,
+                        std::vector<double>& adv_w) {
+  auto unit = [](std::size_t, double, double) { return 1.0; };
+  flux_form(
+      g, s, [&](int i, int k) { return s.u[g.at(i, k)]; },
+      [&](int i, int k) { return s.w[g.at(i, k)]; }, unit, unit, 0.0, adv_u, adv_w);
+}
+
+void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
+                 double rho_l, double dt, MassFluxes& m) {
+  m.x.resize(g.cells());
+  m.z.resize(g.w_faces());
+  const double gx = (rho_g - rho_l) * g.dx / dt, gz = (rho_g - rho_l) * g.dz / dt;
+  for (std::size_t c = 0; c < m.x.size(); ++c) m.x[c] = rho_l * s.u[c] + gx * grains.x[c];
+  for (std::size_t c = 0; c < m.z.size(); ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
+}
+
+void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
+                                   const std::vector<double>& rho_u,
+                                   const std::vector<double>& rho_w, double dt,
+                                   std::vector<double>& adv_u, std::vector<double>& adv_w) {
+  // rho_new = rho^n - dt div(G): the density that the same mass fluxes leave in the control
+  // volume, so that the update of rho u is a weighted mean of u^n and the incoming u's. The
+  // staggered volume's fluxes are averages of the cells' fluxes, not a partition of its own
+  // mass, so a volume that loses grains can be left with a rho_new far below what it lost (or
+  // below zero): there the divisor is rho^n, or the mass that entered, whichever is larger, which
+  // keeps the update a weighted mean (u^n plus at most the whole difference to the inflow).
+  auto new_density = [&](const std::vector<double>& rho) {
+    return [&rho, dt](std::size_t c, double div, double in) {
+      return std::max({rho[c] - dt * div, rho[c], dt * in});
+    };
+  };
+  flux_form(
+      g, s, [&](int i, int k) { return m.x[g.at(i, k)]; },
+      [&](int i, int k) { return m.z[g.at(i, k)]; }, new_density(rho_u), new_density(rho_w), dt,
+      adv_u, adv_w);
 }
 
 }  // namespace granbench::twod

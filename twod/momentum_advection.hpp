@@ -1,15 +1,38 @@
-// Explicit momentum advection (u . grad) u on the MAC grid (momentum_advection.cpp).
+// Explicit momentum advection (u . grad) u on the MAC grid (momentum_advection.cpp), carried by
+// the velocity (the default) or by the mass fluxes of the VOF step (consistent transport).
 #pragma once
 
 #include <vector>
 
 #include "twod/fields.hpp"
 #include "twod/grid.hpp"
+#include "twod/vof_advection.hpp"
 
 namespace granbench::twod {
 
 // adv_u at every u-face, adv_w at the interior w-faces (k = 1 .. nz-1; others left 0).
 void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv_u,
                         std::vector<double>& adv_w);
+
+// Mass fluxes through the cell faces over one step [kg m^-2 s^-1]: x at x-face (i, k), z at
+// z-face (i, k) (nz + 1 rows).
+struct MassFluxes {
+  std::vector<double> x, z;
+};
+
+// The mass that the VOF step moved through each face: its grain volume at rho_g and the rest of
+// the face's volume flux u dt at rho_l, per unit area and time.
+void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
+                 double rho_l, double dt, MassFluxes& m);
+
+// The same operator with the mass fluxes m as carriers, normalised by the density that these
+// fluxes leave in each control volume, rho^n - dt div(m) (rho_u, rho_w: the face densities at
+// level n). In a region of one density it equals momentum_advection's value to O(dt div u); across
+// the interface it carries momentum with the mass that the VOF step moves, so a parcel of grains
+// keeps its own velocity as it crosses faces that held light fluid (Rudman 1997).
+void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
+                                   const std::vector<double>& rho_u,
+                                   const std::vector<double>& rho_w, double dt,
+                                   std::vector<double>& adv_u, std::vector<double>& adv_w);
 
 }  // namespace granbench::twod

@@ -51,6 +51,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("viscous_tolerance", p.viscous_tolerance);
   a("viscosity_passes", p.viscosity_passes);
   a("advection_ab2", p.advection_ab2 ? 1.0 : 0.0);
+  a("consistent_momentum", p.consistent_momentum ? 1.0 : 0.0);
   a("viscosity_tangent", p.viscosity_tangent ? 1.0 : 0.0);
   a("hydrostatic_viscosity_pressure", p.hydrostatic_viscosity_pressure ? 1.0 : 0.0);
   a("surface_row_pressure", p.surface_row_pressure ? 1.0 : 0.0);

@@ -106,11 +106,21 @@ struct SolverParams {
   // to the accuracy of the iteration (about n times the cost).
   int viscosity_passes = 1;
   bool advect_momentum = true;
-  // Time integration of the advective term: true (default) = second-order Adams-Bashforth,
-  // (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps actually taken;
-  // false = forward Euler (u^n . grad u^n), whose anti-diffusion (U^2 dt/2) d2/dx2 makes the
-  // weakly damped surface-layer shear modes (lambda ~ 6 mm) grow (docs/twod-validation.md).
+  // Time integration of the velocity form (consistent_momentum = false): true = second-order
+  // Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps
+  // actually taken; false = forward Euler (u^n . grad u^n), whose anti-diffusion (U^2 dt/2) d2/dx2
+  // makes the weakly damped surface-layer shear modes (lambda ~ 6 mm) grow
+  // (docs/twod-validation.md).
   bool advection_ab2 = true;
+  // What carries momentum across the faces. true (default): the mass fluxes of the step's VOF
+  // advection (consistent_momentum_advection in momentum_advection.hpp), one step with
+  // time-centred face values (no forward-Euler anti-diffusion, no Adams-Bashforth); a parcel of
+  // grains keeps its momentum as it crosses faces that held light fluid. false: the velocity
+  // (the advective form, with advection_ab2). With the velocity form a droplet of grains thrown
+  // off a steep front takes the light fluid's velocity of every face it moves into, rides the
+  // light fluid's updraft to the open top, and the run diverges there (docs/twod-validation.md
+  // §8); on the linear §7 check the two differ by 0.1-0.2 %.
+  bool consistent_momentum = true;
   bool advect_interface = true;
   // OpenMP threads of the solver's loops (parallel.hpp); results do not depend on it. The
   // default is the thread count of the thread that makes these parameters (OMP_NUM_THREADS, or

@@ -14,15 +14,18 @@
 //   dp               : div(grad dp / rho^{n+1}) = div u* / dt
 //   u^{n+1} = u* - dt grad dp / rho^{n+1},   p^{n+1} = p^n + dp
 //
-// with the advection A = u . grad u by second-order Adams-Bashforth, A^{n+1/2} = (1 + r/2) A^n
-// - (r/2) A^{n-1}, r = dt_n/dt_{n-1} (the steps actually taken), the stress linearised about
-// u^n with its consistent tangent, tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n) (viscous_step.cpp),
+// with the advection A carried by the mass fluxes of the VOF step, rho^{n+1}(u^n - dt A) =
+// rho^n u^n - dt div(G q) with time-centred face values q (momentum_advection.hpp; the option
+// consistent_momentum = false advects the velocity by second-order Adams-Bashforth, A^{n+1/2} =
+// (1 + r/2) A^n - (r/2) A^{n-1}, r = dt_n/dt_{n-1} of the steps actually taken), the stress
+// linearised about u^n with its consistent tangent, tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n) (viscous_step.cpp),
 // and p* following the surface to the new level (viscosity_pressure.cpp). These remove a
 // first-order time error that the 2D growth rate is very sensitive to: the surface
 // mode's growth is ~1 % of its frequency, and a phase lag of omega dt in the pressure-dependent
 // friction alone cost 20 % of it at cfl 0.4 (docs/twod-validation.md).
 //
-// Options (parameters.hpp): forward-Euler advection (advection_ab2 = false); eta lagged at u^n
+// Options (parameters.hpp): the velocity form of the advection (consistent_momentum = false),
+// with forward Euler (advection_ab2 = false); eta lagged at u^n
 // (viscosity_tangent = false) and p^n (hydrostatic_viscosity_pressure = false); viscosity_passes >
 // 1 repeats the predictor and projection with eta from the provisional u^{n+1}, p^{n+1} (Picard).
 //
@@ -104,8 +107,19 @@ double Solver::step(double dt_limit) {
   const double r = dt_previous_ > 0.0 ? dt / dt_previous_ : 0.0;
   // 1. interface; the column heights before and after feed eta's hydrostatic pressure in step 2
   if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
+  const bool consistent =
+      params_.consistent_momentum && params_.advect_momentum && params_.advect_interface;
   if (params_.advect_interface)
-    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_);
+    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_,
+                           consistent ? &grain_fluxes_ : nullptr);
+  // the consistent operator needs the level-n face densities, which step 2 replaces
+  if (consistent) {
+    const double rho_g = params_.rheology.material.bulk_density(),
+                 rho_l = params_.rheology.rho_light;
+    mass_fluxes(g_, s_, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
+    consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt, adv_cons_u_,
+                                  adv_cons_w_);
+  }
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
@@ -121,7 +135,11 @@ double Solver::step(double dt_limit) {
   else
     force_u_.clear();
   // 3. momentum predictor
-  if (params_.advect_momentum) {
+  if (consistent) {
+    // the one-step consistent operator, time-centred by its face values: no Adams-Bashforth
+    adv_u_.swap(adv_cons_u_);
+    adv_w_.swap(adv_cons_w_);
+  } else if (params_.advect_momentum) {
     momentum_advection(g_, s_, adv_u_, adv_w_);
     if (params_.advection_ab2) {
       const bool have_old = !adv_u_old_.empty() && r > 0.0;

@@ -115,13 +115,15 @@ void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, do
 
 void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
                             const std::vector<double>& w, double dt, bool x_first,
-                            std::vector<double>& f, VofStats& stats) {
+                            std::vector<double>& f, VofStats& stats, GrainFluxes* fluxes) {
   std::vector<char> c(f.size());
   for (std::size_t n = 0; n < f.size(); ++n) c[n] = f[n] > 0.5 ? 1 : 0;  // Weymouth-Yue c_i
   std::vector<double> flux;
   const int first = x_first ? 0 : 1;
-  sweep(g, u, w, dt, first, c, f, flux, stats);
-  sweep(g, u, w, dt, 1 - first, c, f, flux, stats);
+  for (const int dir : {first, 1 - first}) {
+    sweep(g, u, w, dt, dir, c, f, flux, stats);
+    if (fluxes) (dir == 0 ? fluxes->x : fluxes->z) = flux;
+  }
 }
 
 }  // namespace granbench::twod

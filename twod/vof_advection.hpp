@@ -11,12 +11,19 @@ struct VofStats {
   double clipped_volume = 0.0;  // |volume| removed by clipping f to [0, 1] (should stay ~1e-16)
 };
 
+// Grain volume that crossed each face in one step, in cell units (of dx dz): x at x-face (i, k),
+// z at z-face (i, k) (nz + 1 rows).
+struct GrainFluxes {
+  std::vector<double> x, z;
+};
+
 // One time step of directionally split PLIC advection with the Weymouth-Yue correction;
 // `x_first` alternates the sweep order from step to step. u, w are the (discretely
-// divergence-free) face velocities of the step.
+// divergence-free) face velocities of the step. When `fluxes` is given, it receives the step's
+// face fluxes (for momentum carried consistently with f).
 void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
                             const std::vector<double>& w, double dt, bool x_first,
-                            std::vector<double>& f, VofStats& stats);
+                            std::vector<double>& f, VofStats& stats, GrainFluxes* fluxes = nullptr);
 
 // Youngs normal (pointing out of the fluid) of cell (i, k) in cell-unit coordinates.
 void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, double& m1,

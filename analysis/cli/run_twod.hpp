@@ -30,6 +30,8 @@ struct TwodOptions {
   }();
   double Lz = 0.0;  // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
   std::string mixing = twod::viscosity_mixing_name(twod::Rheology{}.mixing);  // --mixing's text
+  std::string momentum_transport =  // --momentum-transport's text
+      twod::SolverParams{}.consistent_momentum ? "consistent" : "velocity";
   double dt_snapshot = 0.0;  // interval of the 2D field snapshots [s]; 0: t_end/10
   std::string checkpoint;  // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
   double checkpoint_every = 1.0;  // simulated time between checkpoints [s]; 0: only at a stop

@@ -45,6 +45,12 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--mixing", o.mixing, "twod: viscosity in interface cells {arithmetic,harmonic}")
       ->check(one_of(mixing_names()))
       ->capture_default_str();
+  app.add_option("--momentum-transport", o.momentum_transport,
+                 "twod: what carries momentum across faces {velocity,consistent}; consistent: the "
+                 "mass fluxes of the VOF step, so that grains thrown off a steep front keep their "
+                 "own momentum (long nonlinear runs; docs/twod-validation.md)")
+      ->check(one_of({"velocity", "consistent"}))
+      ->capture_default_str();
   app.add_option("--cfl", o.settings.cfl, "twod: Courant number per direction, in (0, 0.5)")
       ->check(open_range(0.0, 0.5))
       ->capture_default_str();
@@ -103,6 +109,7 @@ twod::SolverParams twod_run_params(const RunOptions& o, const TwodOptions& mo, d
   settings.nx = int(o.nx);
   settings.Lz_over_h0 = Lz / o.flow.h0;
   settings.mixing = *twod::viscosity_mixing_from_name(mo.mixing);  // checked by the option
+  settings.consistent_momentum = mo.momentum_transport == "consistent";
   // The options were made before --threads was parsed; the thread count is this thread's now.
   settings.threads = twod::thread_count();
   return twod_solver_params(chute_case(o), settings);

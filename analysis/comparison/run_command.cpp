@@ -43,6 +43,9 @@ std::string twod_numerics_options(const TwodSettings& s) {
     if (s.*member != defaults.*member) text += std::string(" ") + option + " " + exact(s.*member);
   if (s.mixing != defaults.mixing)
     text += std::string(" --mixing ") + twod::viscosity_mixing_name(s.mixing);
+  if (s.consistent_momentum != defaults.consistent_momentum)
+    text +=
+        std::string(" --momentum-transport ") + (s.consistent_momentum ? "consistent" : "velocity");
   return text;
 }
 

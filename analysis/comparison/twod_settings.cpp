@@ -22,6 +22,7 @@ twod::SolverParams twod_solver_params(const ChuteCase& c, const TwodSettings& s)
   p.dt_max = s.dt_max;
   p.solver_tolerance = s.tolerance;
   p.viscosity_passes = s.viscosity_passes;
+  p.consistent_momentum = s.consistent_momentum;
   p.threads = s.threads;
   try {
     p.velocity_limit = twod::divergence_speed_limit(c.steady().u_surface);
@@ -45,6 +46,7 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           {"dt_max", s.dt_max},
           {"tolerance", s.tolerance},
           {"viscosity_passes", double(s.viscosity_passes)},
+          {"consistent_momentum", s.consistent_momentum ? 1.0 : 0.0},
           {"chebyshev_N", double(s.chebyshev_N)}};
 }
 

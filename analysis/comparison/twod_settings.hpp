@@ -29,6 +29,8 @@ struct TwodSettings {
   double dt_max = twod::SolverParams{}.dt_max;               // [s]
   double tolerance = twod::SolverParams{}.solver_tolerance;  // relative residual of linear solves
   int viscosity_passes = twod::SolverParams{}.viscosity_passes;  // Picard passes for eta per step
+  // momentum carried by the VOF step's mass fluxes (twod/parameters.hpp)
+  bool consistent_momentum = twod::SolverParams{}.consistent_momentum;
   int chebyshev_N = 32;  // resolution of the eigenmode used for seeding
   // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
   // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.

@@ -79,12 +79,15 @@ TEST(PaperCase, RollwavesRunToTenSeconds) {
 
 // Figure 13: the paper puts the "discrepancies in magnitude" of its 2D growth rates down to its
 // start, a sine whose a0 is close to the saturated amplitude, and says the points follow the
-// shape of the relation. Checked as that claim: at every length the 2D theory calls unstable, the
-// eigenmode-seeded 2D wave grows, and nearer the exact 2D theory's rate than the paper's protocol's
-// (7.12) where that one was measured (a sine run that stops early has none).
+// shape of the relation. Checked as that claim: every run completes (the long sine runs stopped
+// before momentum was carried with the VOF step's mass fluxes), at every length the 2D theory
+// calls unstable the eigenmode-seeded 2D wave grows, and it is nearer the exact 2D theory's rate
+// than the paper's protocol's (7.12) wherever the grid resolves the wave with at least 60 cells
+// per wavelength (dx = 0.5 mm: from 3 cm up). At 2 cm (40 cells) neither is near: the eigenmode
+// run is 67 % low, a resolution error in x and t (docs/twod-validation.md §3), the sine run 62 %.
 TEST(PaperCase, Figure13EigenmodeSeedingIsNearerThe2DTheoryThanThePapersStart) {
-  // The paper's start stops the long 2D runs early (docs/paper-cases.md): judged where it ran.
-  const auto j = run_case("figure13", true);
+  const auto j = run_case("figure13");
+  const double dx = 0.5e-3;  // the default preset's cell at every length (cases/figure13.toml)
   int compared = 0;
   for (const auto& p : j["points"]) {
     const double exact = p["exact_2d"].get<double>();
@@ -92,13 +95,14 @@ TEST(PaperCase, Figure13EigenmodeSeedingIsNearerThe2DTheoryThanThePapersStart) {
     ASSERT_TRUE(p["eigenmode_vs_2d"].is_number()) << p;
     EXPECT_TRUE(p["eigenmode_message"].get<std::string>().empty()) << p;  // every one completes
     EXPECT_GT(p["eigenmode_spectral"].get<double>(), 0.0) << p;
-    if (!p["sine_712_vs_2d"].is_number()) continue;
+    ASSERT_TRUE(p["sine_712_vs_2d"].is_number()) << p;  // every sine run completes its 3 s
+    if (p["Lx"].get<double>() / dx < 60.0 - 1e-9) continue;
     ++compared;
     EXPECT_LT(std::abs(p["eigenmode_vs_2d"].get<double>()),
               std::abs(p["sine_712_vs_2d"].get<double>()))
         << p;
   }
-  EXPECT_GE(compared, 4);
+  EXPECT_GE(compared, 7);
 }
 
 }  // namespace

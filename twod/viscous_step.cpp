@@ -26,6 +26,7 @@
 // (balanced force), so a hydrostatic p^n cancels gravity exactly.
 #include "twod/viscous_step.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -40,6 +41,7 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
       kind_(params.viscous_solver),
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
+      rho_grains_(params.rheology.material.bulk_density()),
       op_(g),
       explicit_stress_(g),
       solver_(params.viscous_solver, params.viscous_tolerance) {}
@@ -51,9 +53,24 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   const Grid& g = g_;
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
-  if (tangent_)
-    op_.set(props, props.eta_c_tangent, props.eta_n_tangent, dt);
-  else
+  if (tangent_) {
+    // The implicit part eta_m = max(eta_t, eta - K): the tangent, unless that leaves an explicit
+    // part (eta - eta_t) dt / (rho h^2) above 1, which explicit stress cannot carry. At low I
+    // the tangent ratio Gamma/mu -> 0 while eta reaches eta_max: in a layer coming to rest (§5.2,
+    // eta_max = 1e7 Pa s) the whole yield stress was then explicit, mu p sign(D^n), and the layer
+    // started to move again on a slope below mu_s. In the §7 flow the ratio is below 0.4, so
+    // the limit never acts there.
+    const double h = std::min(g.dx, g.dz);
+    const double K = rho_grains_ * h * h / dt;
+    auto implicit = [K](const std::vector<double>& eta, const std::vector<double>& eta_t,
+                        std::vector<double>& out) {
+      out.resize(eta.size());
+      for (std::size_t c = 0; c < eta.size(); ++c) out[c] = std::max(eta_t[c], eta[c] - K);
+    };
+    implicit(props.eta_c, props.eta_c_tangent, implicit_c_);
+    implicit(props.eta_n, props.eta_n_tangent, implicit_n_);
+    op_.set(props, implicit_c_, implicit_n_, dt);
+  } else
     op_.set(props, dt);
   // Initial guess u^n + (dt/dt_prev)(u* - u^n)_prev: the predictor increment changes slowly
   // from step to step, and starting from it halves the iterations against starting from u^n.
@@ -95,9 +112,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     lagged_c_.resize(props.eta_c.size());
     lagged_n_.resize(props.eta_n.size());
     for (std::size_t c = 0; c < lagged_c_.size(); ++c)
-      lagged_c_[c] = props.eta_c[c] - props.eta_c_tangent[c];
+      lagged_c_[c] = props.eta_c[c] - implicit_c_[c];
     for (std::size_t c = 0; c < lagged_n_.size(); ++c)
-      lagged_n_[c] = props.eta_n[c] - props.eta_n_tangent[c];
+      lagged_n_[c] = props.eta_n[c] - implicit_n_[c];
     explicit_stress_.set_stress(lagged_c_, lagged_n_);
     explicit_stress_.apply(x_old_, y_);
     b_ -= y_;

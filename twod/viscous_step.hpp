@@ -39,13 +39,15 @@ class ViscousStep {
   double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
   LinearSolverKind kind_;
   double tol_;
-  bool tangent_;  // SolverParams::viscosity_tangent
+  bool tangent_;       // SolverParams::viscosity_tangent
+  double rho_grains_;  // bulk density of the grains: the scale of the explicit-stress limit
   ViscousOperator op_;
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners
   SpdSolver solver_;
-  Eigen::VectorXd b_, x_, x_old_, y_;        // x_old_: u^n as solver unknowns
-  std::vector<double> lagged_c_, lagged_n_;  // eta - eta_t at cells and corners
+  Eigen::VectorXd b_, x_, x_old_, y_;            // x_old_: u^n as solver unknowns
+  std::vector<double> lagged_c_, lagged_n_;      // eta - eta_m at cells and corners
+  std::vector<double> implicit_c_, implicit_n_;  // eta_m: the implicit part of the stress
   Eigen::VectorXd increment_;  // u* - u^n of the last predict (empty before the first)
   double dt_previous_ = 0.0;
 };

@@ -80,6 +80,13 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
   if (f.has("dt_max", res)) settings.dt_max = f.number_in("dt_max", res, 1e-9, 1.0);
   if (f.has("cfl", res)) settings.cfl = f.number_in("cfl", res, 1e-3, 0.499);
   settings.mixing = parse_mixing(f, res);
+  if (f.has("momentum_transport", res)) {
+    const std::string m = f.text("momentum_transport", res);
+    if (m != "consistent" && m != "velocity")
+      throw CaseFileError(f.path() + ": key 'momentum_transport' = '" + m +
+                          "'; valid values {consistent,velocity}");
+    settings.consistent_momentum = m == "consistent";
+  }
   ChuteCase chute;  // the run's flow: the curve is set per run below
   chute.angle_deg = s.angle_deg;
   chute.h0 = s.h0;

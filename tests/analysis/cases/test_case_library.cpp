@@ -71,6 +71,50 @@ TEST(LayerCase, ProgressFractionGrowsToOne) {
   EXPECT_NEAR(*(coarse_end - 1), 1.0 / 9.0, 1e-12);
 }
 
+// A layer put on a slope below its static angle (24 -> 10 degrees, tan 10 = 0.18 < mu_s) stops
+// and stays at rest. With the whole low-I stress explicit (the tangent's remainder at eta_max =
+// 1e7 Pa s, viscous_step.cpp) it stopped at 0.06 s and then sped up again, to 0.03 m/s at this
+// grid and 0.09-0.36 m/s at finer ones by 0.1-0.2 s, for both curves.
+TEST(LayerCase, ALayerBelowItsStaticAngleStaysAtRest) {
+  const CaseFile f = read_case_file(write_file(
+      "gb_case_rest.toml",
+      "kind = \"decelerating\"\ncurves = [\"jop\", \"low-i\"]\nangle0 = 24.0\nangle = 10.0\n"
+      "h0 = 0.004\nLx_over_h0 = 2.0\nLz_over_h0 = 1.5\nt_end = 0.15\nsamples = 16\n"
+      "eta_max = 1.0e7\ndt_max = 1.0e-4\nnoise = 1.0e-6\nnx = [32]\nnz = [24]\n"));
+  const LayerCaseResult r = run_layer_case(layer_case_spec(f, "paper"), 2, nullptr, nullptr);
+  ASSERT_EQ(r.runs.size(), 2u);
+  for (const auto& run : r.runs) {
+    ASSERT_EQ(run.max_speed.size(), 16u);
+    EXPECT_GT(run.max_speed.front(), 0.15);  // the 24-degree Bagnold layer at the start
+    // from 0.1 s on: at rest, up to the light fluid's and the noise's motion
+    for (std::size_t n = 10; n < run.max_speed.size(); ++n) EXPECT_LT(run.max_speed[n], 0.01);
+  }
+}
+
+// The momentum transport of a layer case: the solver's default unless the file names one; an
+// unknown name is refused with the key and the valid values.
+TEST(LayerCase, MomentumTransportKey) {
+  const std::string base =
+      "kind = \"decelerating\"\ncurves = [\"jop\"]\nangle0 = 24.0\nangle = 10.0\n"
+      "h0 = 0.004\nLx_over_h0 = 2.0\nLz_over_h0 = 1.5\nt_end = 0.004\nsamples = 3\n"
+      "nx = [8]\nnz = [6]\n";
+  const auto consistent_of = [&](const std::string& extra, const std::string& name) {
+    const LayerCaseSpec spec =
+        layer_case_spec(read_case_file(write_file(name, base + extra)), "paper");
+    return spec.runs.at(0).params.consistent_momentum;
+  };
+  EXPECT_EQ(consistent_of("", "gb_case_mt0.toml"), twod::SolverParams{}.consistent_momentum);
+  EXPECT_FALSE(consistent_of("momentum_transport = \"velocity\"\n", "gb_case_mt1.toml"));
+  EXPECT_TRUE(consistent_of("momentum_transport = \"consistent\"\n", "gb_case_mt2.toml"));
+  try {
+    consistent_of("momentum_transport = \"mass\"\n", "gb_case_mt3.toml");
+    FAIL();
+  } catch (const CaseFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("'momentum_transport' = 'mass'; valid values"),
+              std::string::npos);
+  }
+}
+
 TEST(CaseFile, ErrorsNameTheKeyAndTheRange) {
   const CaseFile f = read_case_file(write_file("gb_case_b.toml", "angle = 95\nname = \"x\"\n"));
   try {

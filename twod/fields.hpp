@@ -32,6 +32,9 @@ struct Properties {
   std::vector<double> eta_c, eta_n;  // cell-centre and corner viscosities
   std::vector<double> eta_c_tangent, eta_n_tangent;
   std::vector<double> I_c;  // inertial number (2.8) at cell centres (diagnostic)
+  // The strain rates eta was evaluated from: D_xx, D_zz at cell centres and the shear rate
+  // du/dz + dw/dx at corners (stored, not rebuilt per step: see PcgWorkspace for why).
+  std::vector<double> D_xx_c, D_zz_c, gamma_n;
 
   explicit Properties(const Grid& g = Grid())
       : rho_u(g.cells()),
@@ -40,7 +43,10 @@ struct Properties {
         eta_n(g.corners()),
         eta_c_tangent(g.cells()),
         eta_n_tangent(g.corners()),
-        I_c(g.cells()) {}
+        I_c(g.cells()),
+        D_xx_c(g.cells()),
+        D_zz_c(g.cells()),
+        gamma_n(g.corners()) {}
 };
 
 }  // namespace granbench::twod

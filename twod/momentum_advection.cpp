@@ -56,8 +56,11 @@ void flux_form(const Grid& g, const Fields& s, CarrierX&& cx, CarrierZ&& cz, Nor
   auto cz_of = [&](double V) { return std::abs(V) * czr; };
   const int nx = g.nx, nz = g.nz;
   const auto &u = s.u, &w = s.w;
-  adv_u.assign(g.cells(), 0.0);
-  adv_w.assign(g.w_faces(), 0.0);
+  // every u-face and interior w-face is written below; the bed and top w-faces carry no
+  // momentum (no serial fill of the whole arrays: the other threads would wait through it)
+  adv_u.resize(g.cells());
+  adv_w.resize(g.w_faces());
+  for (int i = 0; i < nx; ++i) adv_w[g.at(i, 0)] = adv_w[g.at(i, nz)] = 0.0;
   auto U = [&](int i, int k) { return u[g.at(i, std::clamp(k, 0, nz - 1))]; };
   auto W = [&](int i, int k) { return w[g.at(i, std::clamp(k, 0, nz))]; };
   auto CX = [&](int i, int k) { return cx(g.wrap(i), std::clamp(k, 0, nz - 1)); };
@@ -124,8 +127,11 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
   m.x.resize(g.cells());
   m.z.resize(g.w_faces());
   const double gx = (rho_g - rho_l) * g.dx / dt, gz = (rho_g - rho_l) * g.dz / dt;
-  for (std::size_t c = 0; c < m.x.size(); ++c) m.x[c] = rho_l * s.u[c] + gx * grains.x[c];
-  for (std::size_t c = 0; c < m.z.size(); ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
+  const long nx = long(m.x.size()), nz = long(m.z.size());
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < nx; ++c) m.x[c] = rho_l * s.u[c] + gx * grains.x[c];
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < nz; ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
 }
 
 void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,

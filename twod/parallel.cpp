@@ -66,13 +66,44 @@ double cg_update(double alpha, const Eigen::VectorXd& d, const Eigen::VectorXd& 
   });
 }
 
-void cg_direction(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& d) {
-  const Eigen::Index n = z.size(), nb = (n + kBlock - 1) / kBlock;
+namespace {
+
+// block(lo, len) for the fixed blocks of [0, n), in parallel.
+template <class Block>
+void for_blocks(Eigen::Index n, Block&& block) {
+  const Eigen::Index nb = (n + kBlock - 1) / kBlock;
 #pragma omp parallel for schedule(static) if (nb > 1)
   for (Eigen::Index b = 0; b < nb; ++b) {
-    const Eigen::Index lo = b * kBlock, len = std::min(n, lo + kBlock) - lo;
-    d.segment(lo, len) = z.segment(lo, len) + beta * d.segment(lo, len);
+    const Eigen::Index lo = b * kBlock;
+    block(lo, std::min(n, lo + kBlock) - lo);
   }
+}
+
+}  // namespace
+
+void cg_direction(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& d) {
+  for_blocks(z.size(), [&](Eigen::Index lo, Eigen::Index len) {
+    d.segment(lo, len) = z.segment(lo, len) + beta * d.segment(lo, len);
+  });
+}
+
+void parallel_copy(const Eigen::VectorXd& from, Eigen::VectorXd& to) {
+  to.resize(from.size());
+  for_blocks(from.size(), [&](Eigen::Index lo, Eigen::Index len) {
+    to.segment(lo, len) = from.segment(lo, len);
+  });
+}
+
+void parallel_zero(Eigen::Index n, Eigen::VectorXd& x) {
+  x.resize(n);
+  for_blocks(n, [&](Eigen::Index lo, Eigen::Index len) { x.segment(lo, len).setZero(); });
+}
+
+void parallel_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out) {
+  out.resize(a.size());
+  for_blocks(a.size(), [&](Eigen::Index lo, Eigen::Index len) {
+    out.segment(lo, len) = a.segment(lo, len) - b.segment(lo, len);
+  });
 }
 
 }  // namespace granbench::twod

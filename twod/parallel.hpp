@@ -38,5 +38,10 @@ double cg_update(double alpha, const Eigen::VectorXd& d, const Eigen::VectorXd& 
                  Eigen::VectorXd& x, Eigen::VectorXd& r);
 // d = z + beta d.
 void cg_direction(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& d);
+// Element-wise vector operations split over the threads (a serial copy or fill of a few 100 kB
+// is where the other threads wait otherwise): to = from; x = 0 (resized to n); out = a - b.
+void parallel_copy(const Eigen::VectorXd& from, Eigen::VectorXd& to);
+void parallel_zero(Eigen::Index n, Eigen::VectorXd& x);
+void parallel_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out);
 
 }  // namespace granbench::twod

@@ -15,23 +15,33 @@
 
 namespace granbench::twod {
 
+// The iteration's vectors, kept by the caller from one solve to the next: allocating them per
+// solve (several 100 kB per step) made the kernel zero fresh pages on every step, 12 % of a
+// one-thread 2D run and serial (docs/performance.md).
+struct PcgWorkspace {
+  Eigen::VectorXd r, z, q, d;
+};
+
 // Returns the iterations used, or -1 if max_iterations did not reach the tolerance.
 // apply(x, y): y = A x;  precondition(r, z): z = M^{-1} r.
 template <class Apply, class Precondition>
 int pcg(Apply&& apply, Precondition&& precondition, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-        double tol, int max_iterations) {
+        double tol, int max_iterations, PcgWorkspace& work) {
   const double bnorm = std::sqrt(deterministic_dot(b, b));
   if (bnorm == 0.0) {
     x.setZero(b.size());
     return 0;
   }
-  Eigen::VectorXd r(b.size()), z(b.size()), q(b.size());
+  Eigen::VectorXd &r = work.r, &z = work.z, &q = work.q, &d = work.d;
+  r.resize(b.size());
+  z.resize(b.size());
+  q.resize(b.size());
   apply(x, q);
-  r = b - q;
+  parallel_difference(b, q, r);
   const double target = tol * bnorm;
   if (std::sqrt(deterministic_dot(r, r)) <= target) return 0;
   precondition(r, z);
-  Eigen::VectorXd d = z;
+  parallel_copy(z, d);
   double rz = deterministic_dot(r, z);
   for (int it = 1; it <= max_iterations; ++it) {
     apply(d, q);

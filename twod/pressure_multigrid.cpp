@@ -19,6 +19,8 @@
 // cells stay on one thread (too little work to share).
 #include "twod/pressure_multigrid.hpp"
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 namespace {
@@ -189,13 +191,13 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
     }
     return;
   }
-  x.setZero(L.nx * L.nz);
+  parallel_zero(L.nx * L.nz, x);
   line_sweep(L, b, x, true);
   L.apply(x, res_[l]);
   const bool parallel = L.nx * L.nz >= kParallelCells;
   const PoissonLevel& C = levels_[l + 1];
   Eigen::VectorXd& rc = rhs_c_[l + 1];
-  rc.setZero(C.nx * C.nz);
+  rc.resize(C.nx * C.nz);  // written below: the first fine column assigns, the second adds
   const Eigen::VectorXd& Ax = res_[l];
 #pragma omp parallel for schedule(static) if (parallel)
   for (int ic = 0; ic < C.nx; ++ic)              // R = P^T: sum of the 2 x 2 fine residuals b - A x
@@ -203,7 +205,10 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
       const double* bi = &b[L.cell(i, 0)];
       const double* ai = &Ax[L.cell(i, 0)];
       double* rci = &rc[C.cell(ic, 0)];
-      for (int k = 0; k < L.nz; k += 2) rci[k / 2] += (bi[k] - ai[k]) + (bi[k + 1] - ai[k + 1]);
+      for (int k = 0; k < L.nz; k += 2) {
+        const double pair = (bi[k] - ai[k]) + (bi[k + 1] - ai[k + 1]);
+        rci[k / 2] = i == 2 * ic ? pair : rci[k / 2] + pair;
+      }
     }
   Eigen::VectorXd& xc = x_c_[l + 1];
   vcycle(l + 1, rc, xc);

@@ -69,7 +69,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
     iterations =
         pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
             [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_.precondition(r, z); },
-            b_, x_, tol_, 500);
+            b_, x_, tol_, 500, work_);
     if (iterations < 0) throw std::runtime_error("pressure multigrid-CG did not converge");
     ++mg_stats_.solves;
     mg_stats_.iterations += iterations;

@@ -36,6 +36,7 @@ class Projection {
   PatternedMatrix A_;
   SpdSolver solver_;
   Eigen::VectorXd b_, x_;
+  PcgWorkspace work_;  // conjugate-gradient vectors, reused across steps
 };
 
 // Discrete divergence (u_{i+1} - u_i)/dx + (w_{k+1} - w_k)/dz of cell (i, k).

@@ -130,7 +130,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   };
   auto share = [](double part, double D2) { return D2 > 0.0 ? std::min(part / D2, 1.0) : 0.0; };
   // gamma = du/dz + dw/dx at the corners, with the bed and top conditions.
-  std::vector<double> gam(g.corners());
+  std::vector<double>& gam = props.gamma_n;
+  gam.resize(g.corners());
 #pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k)
     for (int i = 0; i < nx; ++i) {
@@ -175,8 +176,12 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     if (zb >= h) return ps;
     return ps + (p_at(kb) - ps) * (h - z) / (h - zb);
   };
-  std::vector<double> Dxx(g.cells()), Dzz(g.cells());
-#pragma omp parallel for schedule(static)
+  std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
+  Dxx.resize(g.cells());
+  Dzz.resize(g.cells());
+  // Rows dealt out one at a time: mu(I) is evaluated only below the surface, so contiguous
+  // blocks of rows gave one thread the grains and the other the light fluid.
+#pragma omp parallel for schedule(static, 1)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
@@ -193,7 +198,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       props.I_c[c] = model.inertial_number(p[c], D);
     }
     // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static, 1)
   for (int k = 0; k <= nz; ++k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
     for (int i = 0; i < nx; ++i) {

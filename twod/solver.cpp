@@ -18,11 +18,11 @@
 // rho^n u^n - dt div(G q) with time-centred face values q (momentum_advection.hpp; the option
 // consistent_momentum = false advects the velocity by second-order Adams-Bashforth, A^{n+1/2} =
 // (1 + r/2) A^n - (r/2) A^{n-1}, r = dt_n/dt_{n-1} of the steps actually taken), the stress
-// linearised about u^n with its consistent tangent, tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n) (viscous_step.cpp),
-// and p* following the surface to the new level (viscosity_pressure.cpp). These remove a
-// first-order time error that the 2D growth rate is very sensitive to: the surface
-// mode's growth is ~1 % of its frequency, and a phase lag of omega dt in the pressure-dependent
-// friction alone cost 20 % of it at cfl 0.4 (docs/twod-validation.md).
+// linearised about u^n with its consistent tangent, tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n)
+// (viscous_step.cpp), and p* following the surface to the new level (viscosity_pressure.cpp). These
+// remove a first-order time error that the 2D growth rate is very sensitive to: the surface mode's
+// growth is ~1 % of its frequency, and a phase lag of omega dt in the pressure-dependent friction
+// alone cost 20 % of it at cfl 0.4 (docs/twod-validation.md).
 //
 // Options (parameters.hpp): the velocity form of the advection (consistent_momentum = false),
 // with forward Euler (advection_ab2 = false); eta lagged at u^n
@@ -207,6 +207,22 @@ RunStatistics Solver::statistics() const {
 }
 
 void Solver::check_health() const {
+  // Find whether any row holds a bad value in parallel (a flag per row, so the result does not
+  // depend on the thread count); only then search it serially, to report the first one.
+  auto bad = [&](std::size_t c, double w) {
+    return !std::isfinite(s_.u[c]) || std::abs(s_.u[c]) > params_.velocity_limit ||
+           !std::isfinite(w) || std::abs(w) > params_.velocity_limit || !std::isfinite(s_.p[c]) ||
+           !std::isfinite(s_.f[c]);
+  };
+  int bad_rows = 0;
+#pragma omp parallel for schedule(static) reduction(+ : bad_rows)
+  for (int k = 0; k < g_.nz; ++k)
+    for (int i = 0; i < g_.nx; ++i)
+      if (bad(g_.at(i, k), s_.w[g_.at(i, k + 1)])) {
+        ++bad_rows;
+        break;
+      }
+  if (bad_rows == 0) return;
   auto fail = [&](const char* what, double value, double x, double z) {
     std::ostringstream m;
     m << "diverged at t = " << s_.t << " s: " << what << " = " << value << " at x = " << x

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "twod/fields.hpp"
-#include "twod/momentum_advection.hpp"
 #include "twod/grid.hpp"
+#include "twod/momentum_advection.hpp"
 #include "twod/parameters.hpp"
 #include "twod/projection.hpp"
 #include "twod/properties.hpp"
@@ -88,8 +88,8 @@ class Solver {
   VofStats vof_;
   Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
-  GrainFluxes grain_fluxes_;  // the VOF step's fluxes (consistent_momentum)
-  MassFluxes mass_fluxes_;    // and the mass they carry
+  GrainFluxes grain_fluxes_;                     // the VOF step's fluxes (consistent_momentum)
+  MassFluxes mass_fluxes_;                       // and the mass they carry
   std::vector<double> adv_cons_u_, adv_cons_w_;  // the consistent operator at level n
   std::vector<double> adv_u_old_, adv_w_old_;    // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_, h_after_;       // column heights before and after the VOF step

@@ -74,15 +74,15 @@ int SpdSolver::run(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
       return pcg(
           apply,
           [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = inv_diag_.cwiseProduct(r); }, b,
-          x, tol_, max_iterations);
+          x, tol_, max_iterations, work_);
     case LinearSolverKind::LineRelaxation:
       return pcg(
           apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { line_.precondition(A, r, z); },
-          b, x, tol_, max_iterations);
+          b, x, tol_, max_iterations, work_);
     default:
       return pcg(
           apply, [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = llt_.solve(r); }, b, x,
-          tol_, max_iterations);
+          tol_, max_iterations, work_);
   }
 }
 

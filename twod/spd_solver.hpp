@@ -24,6 +24,7 @@
 
 #include "twod/line_relaxation.hpp"
 #include "twod/parameters.hpp"
+#include "twod/pcg.hpp"
 
 namespace granbench::twod {
 
@@ -83,6 +84,7 @@ class SpdSolver {
   std::vector<std::vector<int>> lines_;
   LineRelaxation line_;
   SolveStats stats_;
+  PcgWorkspace work_;  // conjugate-gradient vectors, reused across solves
 };
 
 }  // namespace granbench::twod

@@ -33,8 +33,10 @@ class ViscousOperator {
   void set_stress(const std::vector<double>& eta_c, const std::vector<double>& eta_n);
   // y = A x.
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  // z = M^{-1} r: one sweep over the lines (u-lines, then w-lines, columns ascending) and one
-  // in exactly the reverse order, from z = 0, so that M is symmetric. Serial (see the .cpp).
+  // z = M^{-1} r: one sweep over the lines (u-lines, then w-lines, each in blocks of columns:
+  // the even blocks, then the odd ones, columns ascending in a block) and one in exactly the
+  // reverse order, from z = 0, so that M is symmetric. Blocks of one colour are swept in
+  // parallel (see the .cpp).
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   // The same matrix assembled (for the sparse-matrix preconditioners of SpdSolver).
   void assemble(PatternedMatrix& A) const;

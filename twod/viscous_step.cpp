@@ -30,6 +30,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "twod/parallel.hpp"
 #include "twod/pcg.hpp"
 
 namespace granbench::twod {
@@ -65,7 +66,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     auto implicit = [K](const std::vector<double>& eta, const std::vector<double>& eta_t,
                         std::vector<double>& out) {
       out.resize(eta.size());
-      for (std::size_t c = 0; c < eta.size(); ++c) out[c] = std::max(eta_t[c], eta[c] - K);
+      const long n = long(eta.size());
+#pragma omp parallel for schedule(static)
+      for (long c = 0; c < n; ++c) out[c] = std::max(eta_t[c], eta[c] - K);
     };
     implicit(props.eta_c, props.eta_c_tangent, implicit_c_);
     implicit(props.eta_n, props.eta_n_tangent, implicit_n_);
@@ -76,7 +79,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   // from step to step, and starting from it halves the iterations against starting from u^n.
   const bool have_increment = increment_.size() == op_.size() && dt_previous_ > 0.0;
   const double guess_scale = have_increment ? dt / dt_previous_ : 0.0;
-  b_.setZero(op_.size());
+  b_.resize(op_.size());  // every entry is written below
   x_.resize(op_.size());
   // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n. (Loops over
   // rows in parallel: each entry is written once; parallel.hpp.)
@@ -111,13 +114,14 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = at.w[g.at(i, k)];
     lagged_c_.resize(props.eta_c.size());
     lagged_n_.resize(props.eta_n.size());
-    for (std::size_t c = 0; c < lagged_c_.size(); ++c)
-      lagged_c_[c] = props.eta_c[c] - implicit_c_[c];
-    for (std::size_t c = 0; c < lagged_n_.size(); ++c)
-      lagged_n_[c] = props.eta_n[c] - implicit_n_[c];
+    const long nc = long(lagged_c_.size()), nn = long(lagged_n_.size());
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < nc; ++c) lagged_c_[c] = props.eta_c[c] - implicit_c_[c];
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < nn; ++c) lagged_n_[c] = props.eta_n[c] - implicit_n_[c];
     explicit_stress_.set_stress(lagged_c_, lagged_n_);
     explicit_stress_.apply(x_old_, y_);
-    b_ -= y_;
+    parallel_difference(b_, y_, b_);
   }
   // Known values at the top: w^n on the top face in the top cell's D_zz, and the top corner's
   // tau_xz = eta (dw/dx) (du/dz = 0 there).
@@ -133,14 +137,14 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   if (kind_ == LinearSolverKind::LineRelaxation) {
     iterations = pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
                      [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { op_.precondition(r, z); },
-                     b_, x_, tol_, 2000);
+                     b_, x_, tol_, 2000, work_);
     if (iterations < 0)
       throw std::runtime_error("viscous step: conjugate gradients did not converge");
   } else {
     op_.assemble(A_);
     iterations = solver_.solve(A_.matrix(), b_, x_);
   }
-  increment_ = x_;
+  parallel_copy(x_, increment_);
   u_star.resize(g.cells());
   w_star.assign(g.w_faces(), 0.0);
 #pragma omp parallel for schedule(static)

@@ -45,6 +45,7 @@ class ViscousStep {
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners
   SpdSolver solver_;
+  PcgWorkspace work_;                            // conjugate-gradient vectors, reused across steps
   Eigen::VectorXd b_, x_, x_old_, y_;            // x_old_: u^n as solver unknowns
   std::vector<double> lagged_c_, lagged_n_;      // eta - eta_m at cells and corners
   std::vector<double> implicit_c_, implicit_n_;  // eta_m: the implicit part of the stress

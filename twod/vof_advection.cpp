@@ -56,8 +56,10 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   const int nx = g.nx, nz = g.nz;
   if (dir == 0) {
     const double r = dt / g.dx;
-    flux.assign(g.cells(), 0.0);  // flux through x-face (i, k)
-#pragma omp parallel for schedule(static)
+    flux.resize(g.cells());  // flux through x-face (i, k); every face written below
+    // (rows one at a time: only the few rows at the surface need PLIC, and in contiguous blocks
+    // they all fell to one thread)
+#pragma omp parallel for schedule(static, 1)
     for (int k = 0; k < nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const double s = u[g.at(i, k)] * r;
@@ -65,6 +67,8 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
           flux[g.at(i, k)] = donor_flux(g, f, g.wrap(i - 1), k, 0, true, s);
         else if (s < 0.0)
           flux[g.at(i, k)] = -donor_flux(g, f, i, k, 0, false, -s);
+        else
+          flux[g.at(i, k)] = 0.0;
       }
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
@@ -74,8 +78,9 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
       }
   } else {
     const double r = dt / g.dz;
-    flux.assign(g.w_faces(), 0.0);  // flux through z-face (i, k); 0 at the bed
-#pragma omp parallel for schedule(static)
+    flux.resize(g.w_faces());  // flux through z-face (i, k); every face written below
+    for (int i = 0; i < nx; ++i) flux[g.at(i, 0)] = 0.0;  // the bed
+#pragma omp parallel for schedule(static, 1)
     for (int k = 1; k <= nz; ++k)
       for (int i = 0; i < nx; ++i) {
         const double s = w[g.at(i, k)] * r;
@@ -83,7 +88,8 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
           flux[g.at(i, k)] = donor_flux(g, f, i, k - 1, 1, true, s);
         else if (s < 0.0 && k < nz)
           flux[g.at(i, k)] = -donor_flux(g, f, i, k, 1, false, -s);
-        // inflow through the top carries light fluid only (f = 0)
+        else  // no flow, or inflow through the top, which carries light fluid only (f = 0)
+          flux[g.at(i, k)] = 0.0;
       }
 #pragma omp parallel for schedule(static)
     for (int k = 0; k < nz; ++k)
@@ -92,16 +98,22 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
         f[a] += -(flux[b] - flux[a]) + c[a] * r * (w[b] - w[a]);
       }
   }
-  // (serial: the clipped volume is a running sum, kept in the serial order)
-  for (double& v : f) {
-    if (v < 0.0) {
-      stats.clipped_volume += -v;
-      v = 0.0;
-    } else if (v > 1.0) {
-      stats.clipped_volume += v - 1.0;
-      v = 1.0;
+  // Clip to [0, 1]; the clipped volume is summed per row, then over the rows in order, so that
+  // it does not depend on the thread count.
+  std::vector<double> clipped_rows(nz, 0.0);
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      double& v = f[g.at(i, k)];
+      if (v < 0.0) {
+        clipped_rows[k] += -v;
+        v = 0.0;
+      } else if (v > 1.0) {
+        clipped_rows[k] += v - 1.0;
+        v = 1.0;
+      }
     }
-  }
+  for (double row : clipped_rows) stats.clipped_volume += row;
 }
 }  // namespace
 
@@ -122,7 +134,7 @@ void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
   const int first = x_first ? 0 : 1;
   for (const int dir : {first, 1 - first}) {
     sweep(g, u, w, dt, dir, c, f, flux, stats);
-    if (fluxes) (dir == 0 ? fluxes->x : fluxes->z) = flux;
+    if (fluxes) (dir == 0 ? fluxes->x : fluxes->z).swap(flux);  // (flux is rewritten in full)
   }
 }
 

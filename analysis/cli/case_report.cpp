@@ -46,7 +46,7 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
     const auto& r = j["run"];
     std::cout << "  status " << r.value("status", std::string("?")) << ", t reached "
               << r.value("t_reached", 0.0) << " s, wall " << r.value("wall_seconds", 0.0) << " s\n";
-    for (const char* key : {"growth_rate", "phase_speed", "wave_speed", "mass_error"})
+    for (const char* key : {"growth_rate", "phase_speed", "wave_speed", "wave_mode", "mass_error"})
       if (r.contains(key) && !r[key].is_null())
         std::cout << "  " << key << " " << r[key].dump() << "\n";
   }

@@ -221,4 +221,12 @@ std::string eta_text(double wall_seconds, double t_start, double t, double t_end
   return "ETA " + std::to_string(left / 3600) + " h " + std::to_string(left % 3600 / 60) + " min";
 }
 
+std::string wave_speed_note(const std::optional<WaveSpeed>& w) {
+  if (!w) return "(not measured: fewer than 8 samples, or a flat surface)";
+  std::ostringstream s;
+  s << "(phase speed of Fourier mode " << w->mode
+    << " over the last fifth of the run, t = " << w->t_from << " .. " << w->t_to << " s)";
+  return s.str();
+}
+
 }  // namespace granbench::cli

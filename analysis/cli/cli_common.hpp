@@ -5,10 +5,12 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "analysis/comparison/chute_case.hpp"
+#include "analysis/spectral/wave_speed.hpp"
 #include "common/material.hpp"
 #include "common/mu_curves.hpp"
 #include "common/steady_state.hpp"
@@ -65,6 +67,11 @@ void run_plot_script(const std::string& script, const std::string& h5, const std
                      const std::string& extra_args = "");
 // Show progress only on a terminal and without --quiet (docs/design.md).
 bool progress_enabled(const OutputOptions& o);
+
+// What a run's wave speed (Measurement::wave, wave_speed.hpp) is, for the text reports:
+// "(phase speed of Fourier mode 1 over the last fifth of the run, t = 8 .. 10 s)", or why it was
+// not measured.
+std::string wave_speed_note(const std::optional<WaveSpeed>& w);
 
 // "ETA 3 min 12 s": the wall time left if the run keeps its pace so far, from the wall seconds
 // since it started and the simulated times (t_start, t, t_end); "ETA -" before any progress.

@@ -92,7 +92,8 @@ void print_table(const Comparison& c) {
     if (!w.note.empty()) std::cout << "  " << name << ": " << w.note << "\n";
     if (m->saturated && m->wave)
       std::cout << "  " << name << " saturated wave: speed " << std::setprecision(4)
-                << m->wave->speed << " m/s, amplitude " << m->final_amplitude * 1e3 << " mm\n";
+                << m->wave->speed << " m/s (Fourier mode " << m->wave->mode
+                << ", last fifth), amplitude " << m->final_amplitude * 1e3 << " mm\n";
   }
   std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
             << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps

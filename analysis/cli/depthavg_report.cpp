@@ -38,8 +38,8 @@ void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Meas
               << "   (7.12): " << show(j["growth_rate_712"]) << "\n"
               << "  phase speed      " << show(j["phase_speed"])
               << " m/s   (7.11): " << j["phase_speed_exact"].get<double>() << "\n"
-              << "  wave speed       " << show(j["wave_speed"]) << " m/s (cross-correlation, "
-              << "last fifth of the run)\n";
+              << "  wave speed       " << show(j["wave_speed"]) << " m/s "
+              << wave_speed_note(m.wave) << "\n";
     if (!m.spectral.found())
       std::cout << "  growth rate not measured: " << m.spectral.reason << "\n";
     if (m.spectral.found()) {

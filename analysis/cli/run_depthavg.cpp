@@ -2,7 +2,8 @@
 // factor chi, from (7.2) or the normal mode (7.10), integrated by CVODE; the seeded mode's growth
 // rate and phase speed (and the other waves at its wavenumber) measured by the matrix pencil fit
 // of surface_measurement.hpp beside the exact relation (7.11) (chi-generalised),
-// the paper's estimator (7.12), and the speed of the developed wave by cross-correlation.
+// the paper's estimator (7.12), and the speed of the developed wave (its dominant Fourier mode's
+// phase speed, wave_speed.hpp).
 // The options and paths are checked before any work; a stop (SIGINT, SIGTERM) or a failure keeps
 // what was computed (failure_policy.hpp).
 #include <chrono>

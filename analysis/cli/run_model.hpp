@@ -1,7 +1,7 @@
 // `granbench run` and `granbench sweep`: the options every model shares, the model choice, and
 // the per-model entry points. Each model has one file, run_<model>.cpp, that builds its solver
 // from these options and returns the result as JSON (keys shared by all models: steps,
-// wall_seconds, mass_error, h_mean, flux, growth_rate, phase_speed, wave_speed).
+// wall_seconds, mass_error, h_mean, flux, growth_rate, phase_speed, wave_speed, wave_mode).
 //
 // Adding a model: add an enumerator to Model, its name to model_names(), a run_<model>.cpp with
 // its own options struct, and one case in the dispatch of cmd_run.cpp.

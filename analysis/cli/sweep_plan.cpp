@@ -107,7 +107,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
   SweepPlan plan;
   SweepSpec& spec = plan.spec;
   spec.chute = o.flow.chute(spec.chute.Lx);  // Lx is replaced by each point's
-  (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
+  (void)o.flow.steady();                     // a slope with no steady flow is an error on --angle
   if (o.depthavg.frame_speed != "linear" && o.depthavg.frame_speed != "0")
     throw UsageError("--frame-speed: '" + o.depthavg.frame_speed +
                      "' is not allowed for sweep; valid values {0, linear}");

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <optional>
 
+#include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/run_twod.hpp"
 #include "analysis/spectral/measurement.hpp"
@@ -98,7 +99,8 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
                   << growth.modes[i].amplitude * 1e3 << " mm (seeded "
                   << growth.modes[growth.seeded].amplitude * 1e3 << " mm)\n";
     const auto& I = j["I_range"];
-    std::cout << "  wave speed       " << show("wave_speed") << " m/s (second half of the run)\n"
+    std::cout << "  wave speed       " << show("wave_speed") << " m/s "
+              << wave_speed_note(r.measured.wave) << "\n"
               << "  I range          "
               << (I.is_null() ? std::string("-")
                               : std::to_string(I[0].get<double>()) + " .. " +

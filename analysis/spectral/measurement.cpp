@@ -48,7 +48,8 @@ Measurement measure(const SurfaceSeries& s, const MeasureOptions& opt) {
   const double a_from = half_range(s.h_at(from));
   m.saturated = m.final_amplitude > 0.05 * s.h0 &&
                 std::fabs(m.final_amplitude - a_from) < 0.05 * m.final_amplitude;
-  // The speed over the same fifth, widened to 8 samples (7 pairs) for a short run.
+  // The speed (the dominant Fourier mode's phase speed) over the same fifth, widened to 8 samples
+  // (7 pairs) for a short run.
   const std::size_t wave_from = last - std::min(last, std::max<std::size_t>(7, s.nt() / 5));
   if (last - wave_from >= 7) {
     try {
@@ -81,6 +82,7 @@ nlohmann::json to_json(const Measurement& m) {
       {"whole_run_r2", whole_run_fitted(m) ? number_or_null(m.whole_run.r2) : nullptr},
       {"wave_speed", m.wave ? number_or_null(m.wave->speed) : nullptr},
       {"wave_speed_spread", m.wave ? number_or_null(m.wave->spread) : nullptr},
+      {"wave_mode", m.wave ? nlohmann::json(m.wave->mode) : nullptr},
       {"saturated", m.saturated},
       {"final_amplitude", m.final_amplitude}};
 }

@@ -1,7 +1,8 @@
 // The one measurement of a SurfaceSeries that every command reports (`run` of either model,
 // `compare`, `sweep`): the seeded mode and the other waves at its wavenumber (matrix pencil,
 // surface_measurement.hpp), the paper's estimator (7.12) over the same window, ln|h_k| fitted over
-// the whole run, and the developed wave (amplitude, speed by cross-correlation, wave_speed.hpp).
+// the whole run, and the developed wave (amplitude, and speed: the phase speed of the dominant
+// Fourier mode, wave_speed.hpp).
 // `to_json` is the one spelling of these results in every command's JSON output.
 #pragma once
 
@@ -21,9 +22,10 @@ struct Measurement {
   // not (a beating of two waves at the seeded wavenumber), and the only rate of a saturated run.
   LinearFit whole_run;
   std::optional<double> growth_712;  // (7.12) averaged over the spectral fit's window, if any
-  // The wave over the last fifth of the run: its speed (cross-correlation of successive samples;
-  // at least 8 samples) and whether it has saturated (amplitude steady within 5 % and above 5 % of
-  // h0, out of the linear regime), in which case it is the developed rollwave's speed.
+  // The wave over the last fifth of the run: its speed (the dominant Fourier mode's phase speed
+  // over the last fifth, widened to at least 8 samples; wave_speed.hpp) and whether it has
+  // saturated (amplitude steady within 5 % and above 5 % of h0, out of the linear regime), in
+  // which case it is the developed rollwave's speed.
   std::optional<WaveSpeed> wave;
   bool saturated = false;
   double final_amplitude = 0.0;  // (max h - min h)/2 at the last sample [m]
@@ -38,7 +40,8 @@ Measurement measure(const SurfaceSeries& s, const MeasureOptions& opt = {});
 
 // growth_rate, phase_speed (the seeded mode, null where not measured), modes, window [t0, t1],
 // reason (null when measured), note, fit_residual, fit_r2, growth_rate_712,
-// growth_rate_whole_run, whole_run_r2, wave_speed, wave_speed_spread, saturated, final_amplitude.
+// growth_rate_whole_run, whole_run_r2, wave_speed, wave_speed_spread, wave_mode (the Fourier mode
+// followed for wave_speed), saturated, final_amplitude.
 nlohmann::json to_json(const Measurement& m);
 
 }  // namespace granbench

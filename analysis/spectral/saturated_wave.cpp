@@ -3,11 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
-#include <numbers>
 #include <stdexcept>
 
-#include "common/real_fft.hpp"
+#include "analysis/spectral/wave_speed.hpp"
 
 namespace granbench {
 
@@ -86,29 +84,6 @@ double front_width(std::span<const double> h, std::size_t i, double slope_sign, 
   const double x_high =
       slope_sign < 0.0 ? crossing(h, i, 1, -1, high, false) : crossing(h, i, 0, +1, high, false);
   return std::fabs(x_low - x_high) * dx;
-}
-
-// Wave speed: the phase speed of the dominant Fourier component h_m (the largest mean |h_m|, m >=
-// 1, over the window). For a rigid translation h(x - c t) every Fourier coefficient of the
-// samples turns by exactly -k_m c dt when the profile is resolved, so the speed needs neither a
-// model of the shape nor a sub-cell interpolation (the parabola through a cross-correlation peak,
-// wave_speed.hpp, has a bias that depends on the shape). The phase is unwrapped from sample to
-// sample (each step must turn it by less than pi: |c| dt < Lx / 2m) and the total turn is divided
-// by the whole window's duration, so the error is that of the two end phases over the window, not
-// of each pair.
-double dominant_phase_speed(const SurfaceSeries& s, std::size_t n0, std::size_t n1, int& mode) {
-  RealFFT fft(s.nx());
-  std::vector<std::vector<std::complex<double>>> spectra;
-  for (std::size_t n = n0; n <= n1; ++n) spectra.push_back(fft.forward(s.h_at(n)));
-  std::vector<double> power(spectra.front().size(), 0.0);
-  for (const auto& H : spectra)
-    for (std::size_t m = 1; m < H.size(); ++m) power[m] += std::abs(H[m]);
-  mode = static_cast<int>(std::max_element(power.begin() + 1, power.end()) - power.begin());
-  double turn = 0.0;
-  for (std::size_t q = 1; q < spectra.size(); ++q)
-    turn += std::arg(spectra[q][std::size_t(mode)] * std::conj(spectra[q - 1][std::size_t(mode)]));
-  const double k = 2.0 * std::numbers::pi * mode / s.Lx;
-  return -turn / (k * (s.t[n1] - s.t[n0]));
 }
 
 struct MeanSpread {
@@ -190,7 +165,14 @@ SaturatedWave measure_saturated_wave(const SurfaceSeries& s, double t_from, doub
   if (!(w.amplitude > 0.0)) {
     w.wave_speed = kNaN;  // a flat surface has no phase to follow
   } else if (w.samples >= 2) {
-    w.wave_speed = dominant_phase_speed(s, n0, n1, w.speed_mode);
+    try {
+      const WaveSpeed c = wave_speed(s, w.t_from, w.t_to);  // the samples n0 .. n1
+      w.wave_speed = c.speed;
+      w.speed_mode = c.mode;
+    } catch (const std::invalid_argument&) {
+      w.wave_speed = kNaN;  // flat to round-off
+      w.reason += "no wave to follow for the speed (flat to round-off); ";
+    }
   } else {
     w.wave_speed = kNaN;
     w.reason += "wave speed needs two samples in the window; ";

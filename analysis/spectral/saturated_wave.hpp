@@ -11,8 +11,9 @@
 //   front_width  the x-distance over which h rises from 10 % to 90 % of the amplitude across the
 //                steepest front, with the crossings interpolated linearly between cells; mean over
 //                the window (see front_width in saturated_wave.cpp for why these levels).
-//   wave_speed   the phase speed of the profile's dominant Fourier component, unwrapped from
-//                sample to sample over the whole window (see wave_speed in saturated_wave.cpp).
+//   wave_speed   the phase speed of the profile's dominant Fourier component, its phase turn
+//                summed from sample to sample over the whole window (wave_speed.hpp, the same
+//                speed `run` reports); speed_mode is the mode followed.
 //   mean_flux    the depth-integrated volume flux q = h u_mean per unit width, averaged over x and
 //                over the window's samples [m^2/s]; NaN when the series has no u_mean.
 // and the wave shape in the wave's frame at the last sample of the window: xi = x - x_front,

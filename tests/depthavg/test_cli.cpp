@@ -88,8 +88,9 @@ TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
       out);
   ASSERT_EQ(r.code, 0) << last_stderr();
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key : {"steps", "wall_seconds", "mass_error", "h_mean", "flux", "growth_rate",
-                          "phase_speed", "wave_speed", "growth_rate_exact", "phase_speed_exact"})
+  for (const char* key :
+       {"steps", "wall_seconds", "mass_error", "h_mean", "flux", "growth_rate", "phase_speed",
+        "wave_speed", "wave_mode", "growth_rate_exact", "phase_speed_exact"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_NEAR(j["growth_rate"].get<double>(), j["growth_rate_exact"].get<double>(),
               0.02 * j["growth_rate_exact"].get<double>());

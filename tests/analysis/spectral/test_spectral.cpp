@@ -1,7 +1,6 @@
 // The spectral analyses on synthetic SurfaceSeries with known answers: growth rate and phase speed
 // of a mode (surface_measurement.hpp, including an automatically found window before saturation),
-// the paper's estimator (7.12), and the wave speed by cross-correlation with sub-cell
-// interpolation.
+// and the paper's estimator (7.12). The wave speed's tests are in test_wave_speed.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +9,6 @@
 #include "analysis/spectral/growth_estimator_712.hpp"
 #include "analysis/spectral/spectral_growth.hpp"
 #include "analysis/spectral/surface_measurement.hpp"
-#include "analysis/spectral/wave_speed.hpp"
 #include "common/real_fft.hpp"
 #include "common/surface_series.hpp"
 
@@ -101,30 +99,6 @@ TEST(Estimator712, GrowthOfTheMaximumHeight) {
   EXPECT_NEAR(e.growth_rate, sigma, 1e-3 * sigma);
   EXPECT_NEAR(e.fit.slope, sigma, 1e-3 * sigma);
   EXPECT_THROW(growth_estimate_712(s, 5.0, 6.0), std::invalid_argument);
-}
-
-TEST(WaveSpeed, CrossCorrelationRecoversSubCellShifts) {
-  // A steep periodic rollwave-like profile (a smoothed sawtooth), translated without change of
-  // shape at a speed that moves it a non-integer number of cells per sample.
-  const double Lx = 0.08, c = 0.8371, dt = 0.0037;
-  const std::size_t nx = 256;
-  SurfaceSeries s = SurfaceSeries::uniform_grid(Lx, nx, 4e-3);
-  std::vector<double> h(nx);
-  for (int n = 0; n < 20; ++n) {
-    for (std::size_t j = 0; j < nx; ++j) {
-      double v = 0.0;  // Fourier series of a smoothed sawtooth, evaluated exactly at x - c t
-      for (int m = 1; m <= 30; ++m)
-        v += std::exp(-0.01 * m * m) / m * std::sin(2.0 * pi * m * (s.x[j] - c * n * dt) / Lx);
-      h[j] = 4e-3 + 5e-4 * v;
-    }
-    s.append(n * dt, h);
-  }
-  const auto w = wave_speed(s, 0.0, 1.0);
-  EXPECT_EQ(w.pairs, 19u);
-  EXPECT_NEAR(w.speed, c, 2e-3 * c);
-  // Backwards: the same series read in reverse order moves at -c.
-  std::vector<double> a(s.h_at(5).begin(), s.h_at(5).end()), b(s.h_at(4).begin(), s.h_at(4).end());
-  EXPECT_NEAR(correlation_shift(a, b) * Lx / nx / dt, -c, 2e-3 * c);
 }
 
 }  // namespace

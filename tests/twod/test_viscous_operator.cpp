@@ -54,10 +54,10 @@ TEST(ViscousOperator, ProductEqualsTheAssembledMatrixWhichIsSymmetric) {
 }
 
 TEST(ViscousOperator, LineRelaxationIsASymmetricPositivePreconditioner) {
-  // The sweep goes over blocks of 16 columns in two colours: one block (8 columns), an odd
-  // number of blocks whose last one neighbours the first across the periodic boundary (40, 3
-  // blocks), an even number (64, 4 blocks), and a last block that is short (37).
-  for (int nx : {8, 37, 40, 64}) {
+  // The sweep goes over blocks of 8 columns in two colours: one block (8 columns), an odd
+  // number of blocks whose last one neighbours the first across the periodic boundary (24, 3
+  // blocks), an even number (64, 8 blocks), and a last block that is short (37, 5 blocks).
+  for (int nx : {8, 24, 37, 64}) {
     SCOPED_TRACE(nx);
     const Grid g(nx, 6, 0.01 * nx, 0.008);
     ViscousOperator op(g);

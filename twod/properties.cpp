@@ -154,6 +154,34 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     for (int i = 0; i < nx; ++i)
       for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
   }
+  // Per column (cells: column i; corners: columns i-1 and i together), the nearest row at or
+  // above k that is empty (nz if none) and the nearest at or below k that is full (-1 if none),
+  // so that p_granular finds its rows without scanning: light-fluid cells holding wisps of
+  // grains far above the surface scanned down through the whole layer, 9 % of a step.
+  std::vector<int> empty_above_c, full_below_c, empty_above_n, full_below_n;
+  if (extrapolate) {
+    for (auto* v : {&empty_above_c, &full_below_c, &empty_above_n, &full_below_n})
+      v->resize(std::size_t(nx) * nz);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < nx; ++i) {
+      auto cell_is = [&](int k, double v) { return f[g.at(i, k)] == v; };
+      auto pair_is = [&](int k, double v) { return f[g.at(i - 1, k)] == v && f[g.at(i, k)] == v; };
+      int full_c = -1, full_n = -1;
+      for (int k = 0; k < nz; ++k) {
+        if (cell_is(k, 1.0)) full_c = k;
+        if (pair_is(k, 1.0)) full_n = k;
+        full_below_c[g.at(i, k)] = full_c;
+        full_below_n[g.at(i, k)] = full_n;
+      }
+      int empty_c = nz, empty_n = nz;
+      for (int k = nz - 1; k >= 0; --k) {
+        if (cell_is(k, 0.0)) empty_c = k;
+        if (pair_is(k, 0.0)) empty_n = k;
+        empty_above_c[g.at(i, k)] = empty_c;
+        empty_above_n[g.at(i, k)] = empty_n;
+      }
+    }
+  }
   // p at height z in column i (or the mean of columns i-1, i when `corner`): linear between the
   // centre of the highest row below z whose cells are full and, at the surface height h, the
   // pressure p_s of the lowest light-fluid row above (its overburden; 0 if there is none).
@@ -162,15 +190,14 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     auto p_at = [&](int k) {
       return std::max(corner ? 0.5 * (p[g.at(i - 1, k)] + p[g.at(i, k)]) : p[g.at(i, k)], 0.0);
     };
-    auto all = [&](int k, double v) {
-      return corner ? f[g.at(i - 1, k)] == v && f[g.at(i, k)] == v : f[g.at(i, k)] == v;
-    };
+    const auto& empty_above = corner ? empty_above_n : empty_above_c;
+    const auto& full_below = corner ? full_below_n : full_below_c;
     int ka = std::max(int(std::floor(h / g.dz)), 0);  // lowest row entirely above the surface
-    while (ka < nz && !all(ka, 0.0)) ++ka;
+    if (ka < nz) ka = empty_above[g.at(i, ka)];
     const double ps = ka < nz ? p_at(ka) : 0.0;
     if (z >= h) return ps;
     int kb = std::min(int(std::floor(z / g.dz - 0.5)), nz - 1);  // row with centre below z
-    while (kb >= 0 && !all(kb, 1.0)) --kb;
+    if (kb >= 0) kb = full_below[g.at(i, kb)];
     if (kb < 0) return ps;
     const double zb = g.zc(kb);
     if (zb >= h) return ps;

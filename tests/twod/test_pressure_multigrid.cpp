@@ -11,10 +11,12 @@
 #include <random>
 #include <vector>
 
+#include "tests/support/random_vector.hpp"
 #include "twod/pcg.hpp"
 #include "twod/pressure_multigrid.hpp"
 
 using namespace granbench::twod;
+using granbench::testing::random_vector;
 
 namespace {
 
@@ -37,14 +39,6 @@ PoissonLevel layered_operator(int nx, int nz) {
     L.cz[L.zface(i, nz)] = 2.0 * (dx / dz) / 0.15;  // p = 0 half a cell above the top row
   }
   return L;
-}
-
-Eigen::VectorXd random_vector(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v[i] = normal(rng);
-  return v;
 }
 
 // The operator assembled from apply() column by column.

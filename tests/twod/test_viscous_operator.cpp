@@ -7,9 +7,11 @@
 #include <cmath>
 #include <random>
 
+#include "tests/support/random_vector.hpp"
 #include "twod/viscous_operator.hpp"
 
 using namespace granbench::twod;
+using granbench::testing::random_vector;
 
 namespace {
 // Properties with rough, strongly varying viscosities (a contrast of 1e6, as at a free surface)
@@ -25,13 +27,6 @@ Properties rough_properties(const Grid& g, unsigned seed) {
   return p;
 }
 
-Eigen::VectorXd random_vector(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal;
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v[i] = normal(rng);
-  return v;
-}
 }  // namespace
 
 TEST(ViscousOperator, ProductEqualsTheAssembledMatrixWhichIsSymmetric) {

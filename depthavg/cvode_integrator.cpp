@@ -1,9 +1,13 @@
-// The CVODE glue (BDF + SPGMR + coloured block-band preconditioner). See cvode_integrator.hpp.
+// The CVODE glue (BDF; Newton systems by our exact periodic block-band solver or by SPGMR). See
+// cvode_integrator.hpp.
 #include "depthavg/cvode_integrator.hpp"
 
 #include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
 #include <algorithm>
@@ -13,7 +17,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "depthavg/block_band.hpp"
+#include "depthavg/periodic_block_band.hpp"
 
 namespace granbench::depthavg {
 
@@ -52,11 +56,14 @@ struct CvodeIntegrator::Impl {
   N_Vector y = nullptr, atol = nullptr, constraints = nullptr, ftmp = nullptr, ytmp = nullptr,
            ewt = nullptr, ele = nullptr;
   void* mem = nullptr;
-  SUNLinearSolver krylov = nullptr;
-  BlockBandMatrix J, P;  // the lumped Jacobian, and the block LU of I - gamma J
+  SUNLinearSolver linear_solver = nullptr;
+  SUNMatrix opaque_matrix = nullptr;  // Direct: the handle CVODE passes back (P is the content)
+  PeriodicBlockBandMatrix J, P;       // the Jacobian, and the factorisation of I - gamma J
   std::vector<std::vector<std::size_t>> groups;
   std::vector<double> increment;  // of the difference quotients, per cell
-  long precond_rhs_evals = 0;
+  long jacobian_rhs_evals = 0;
+  long jacobian_evals = 0;
+  long solves = 0;
   std::size_t nonfinite = SIZE_MAX;  // last component where U or F(U) was not finite
   std::string last_error;
   double t = 0.0;
@@ -69,7 +76,8 @@ struct CvodeIntegrator::Impl {
         increment(r.nx()) {}
   ~Impl() {
     if (mem) CVodeFree(&mem);
-    if (krylov) SUNLinSolFree(krylov);
+    if (linear_solver) SUNLinSolFree(linear_solver);
+    if (opaque_matrix) SUNMatFreeEmpty(opaque_matrix);
     for (N_Vector v : {y, atol, constraints, ftmp, ytmp, ewt, ele})
       if (v) N_VDestroy(v);
     if (ctx) SUNContext_Free(&ctx);
@@ -96,19 +104,23 @@ struct CvodeIntegrator::Impl {
     return 0;
   }
 
-  // J_band by coloured difference quotients about (y, fy), wrap-around entries lumped onto the
-  // diagonal cell (see the header); then P = I - gamma J_band, block LU (block_band.hpp).
-  static int psetup(sunrealtype, N_Vector yv, N_Vector fy, sunbooleantype jok, sunbooleantype* jcur,
-                    sunrealtype gamma, void* data) {
-    auto* self = static_cast<Impl*>(data);
+  // J by coloured difference quotients about (y, fy) unless CVODE says the saved one will do
+  // (jok); then P = I - gamma J, factored (periodic_block_band.hpp). A singular factor is
+  // recoverable: CVODE retries with a fresh J or a smaller step. The set-up of both solvers (the
+  // preconditioner's of SPGMR, the linear system's of Direct).
+  int setup(N_Vector yv, N_Vector fy, sunbooleantype jok, sunbooleantype* jcur, double gamma) {
     if (!jok) {
-      if (self->band_jacobian(yv, fy) != 0) return 1;
+      if (jacobian(yv, fy) != 0) return 1;
       *jcur = SUNTRUE;
     } else {
       *jcur = SUNFALSE;
     }
-    // a singular pivot block: recoverable, CVODE retries with a fresh J or a smaller step
-    return self->P.factor_shifted(self->J, gamma) ? 0 : 1;
+    return P.factor_shifted(J, gamma) ? 0 : 1;
+  }
+
+  static int psetup(sunrealtype, N_Vector yv, N_Vector fy, sunbooleantype jok, sunbooleantype* jcur,
+                    sunrealtype gamma, void* data) {
+    return static_cast<Impl*>(data)->setup(yv, fy, jok, jcur, gamma);
   }
 
   static int psolve(sunrealtype, N_Vector, N_Vector, N_Vector r, N_Vector z, sunrealtype,
@@ -116,10 +128,37 @@ struct CvodeIntegrator::Impl {
     auto* self = static_cast<Impl*>(data);
     N_VScale(1.0, r, z);
     self->P.solve(self->span_of(z));
+    ++self->solves;
     return 0;
   }
 
-  int band_jacobian(N_Vector yv, N_Vector fy) {
+  // Direct: CVODE's linear-system function (the matrix it passes is our opaque handle).
+  static int linsys(sunrealtype, N_Vector yv, N_Vector fy, SUNMatrix, sunbooleantype jok,
+                    sunbooleantype* jcur, sunrealtype gamma, void* data, N_Vector, N_Vector,
+                    N_Vector) {
+    return static_cast<Impl*>(data)->setup(yv, fy, jok, jcur, gamma);
+  }
+
+  // Direct: the SUNLinearSolver's operations. The factorisation is made in linsys, where gamma
+  // is known; setup has nothing left to do.
+  static SUNLinearSolver_Type direct_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
+  static SUNLinearSolver_ID direct_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
+  static int direct_setup(SUNLinearSolver, SUNMatrix) { return SUNLS_SUCCESS; }
+  static int direct_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
+    auto* self = static_cast<Impl*>(S->content);
+    N_VScale(1.0, b, x);
+    self->P.solve(self->span_of(x));
+    ++self->solves;
+    return SUNLS_SUCCESS;
+  }
+  static int direct_free(SUNLinearSolver S) {
+    S->content = nullptr;  // owned by the integrator
+    SUNLinSolFreeEmpty(S);
+    return SUNLS_SUCCESS;
+  }
+  static SUNMatrix_ID opaque_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
+
+  int jacobian(N_Vector yv, N_Vector fy) {
     const std::size_t nx = rhs.nx(), r = Rhs::stencil_radius;
     const double srur = std::sqrt(std::numeric_limits<double>::epsilon());
     CVodeGetErrWeights(mem, ewt);
@@ -138,19 +177,18 @@ struct CvodeIntegrator::Impl {
           yt[i] += increment[c];
         }
         if (rhs_cb(t, ytmp, ftmp, this) != 0) return 1;
-        ++precond_rhs_evals;
+        ++jacobian_rhs_evals;
         for (std::size_t c : group) {
           for (std::size_t k = 0; k <= 2 * r; ++k) {
             const std::size_t cell = (c + nx + k - r) % nx;
-            // wrap-around (the cyclic neighbour lies beyond the band): lump onto the diagonal
-            const bool wraps = (cell > c ? cell - c : c - cell) > r;
-            auto& blk = J.block(wraps ? c : cell, c);
+            auto& blk = J.block(cell, c);
             for (std::size_t b = 0; b < 2; ++b)
               blk[2 * b + a] += (ft[2 * cell + b] - f0[2 * cell + b]) / increment[c];
           }
         }
       }
     }
+    ++jacobian_evals;
     return 0;
   }
 
@@ -196,15 +234,29 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
   check(CVodeSetMaxOrd(m.mem, p.max_order), "CVodeSetMaxOrd");
   check(CVodeSetConstraints(m.mem, m.constraints), "CVodeSetConstraints");
 
-  const bool band = p.preconditioner == Preconditioner::Band;
-  m.krylov = SUNLinSol_SPGMR(m.y, band ? SUN_PREC_LEFT : SUN_PREC_NONE, 10, m.ctx);
-  if (!m.krylov) throw std::runtime_error("CVODE: SUNLinSol_SPGMR failed");
-  check(CVodeSetLinearSolver(m.mem, m.krylov, nullptr), "CVodeSetLinearSolver");
-  check(CVodeSetEpsLin(m.mem, p.eps_lin), "CVodeSetEpsLin");
-
   m.groups = colour_cells(rhs.nx(), Rhs::stencil_radius);
-  if (band)
-    check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
+  if (p.linear_solver == LinearSolver::Direct) {
+    m.opaque_matrix = SUNMatNewEmpty(m.ctx);
+    m.linear_solver = SUNLinSolNewEmpty(m.ctx);
+    if (!m.opaque_matrix || !m.linear_solver) throw std::runtime_error("CVODE: out of memory");
+    m.opaque_matrix->ops->getid = &Impl::opaque_id;
+    m.linear_solver->content = &m;
+    m.linear_solver->ops->gettype = &Impl::direct_type;
+    m.linear_solver->ops->getid = &Impl::direct_id;
+    m.linear_solver->ops->setup = &Impl::direct_setup;
+    m.linear_solver->ops->solve = &Impl::direct_solve;
+    m.linear_solver->ops->free = &Impl::direct_free;
+    check(CVodeSetLinearSolver(m.mem, m.linear_solver, m.opaque_matrix), "CVodeSetLinearSolver");
+    check(CVodeSetLinSysFn(m.mem, &Impl::linsys), "CVodeSetLinSysFn");
+  } else {
+    const bool band = p.linear_solver == LinearSolver::KrylovBand;
+    m.linear_solver = SUNLinSol_SPGMR(m.y, band ? SUN_PREC_LEFT : SUN_PREC_NONE, 10, m.ctx);
+    if (!m.linear_solver) throw std::runtime_error("CVODE: SUNLinSol_SPGMR failed");
+    check(CVodeSetLinearSolver(m.mem, m.linear_solver, nullptr), "CVodeSetLinearSolver");
+    check(CVodeSetEpsLin(m.mem, p.eps_lin), "CVodeSetEpsLin");
+    if (band)
+      check(CVodeSetPreconditioner(m.mem, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
+  }
 }
 
 CvodeIntegrator::~CvodeIntegrator() = default;
@@ -250,10 +302,10 @@ CvodeStats CvodeIntegrator::stats() const {
   CVodeGetNumSteps(m.mem, &s.steps);
   CVodeGetNumRhsEvals(m.mem, &s.rhs_evals);
   CVodeGetNumLinRhsEvals(m.mem, &s.rhs_evals_jtimes);
-  s.rhs_evals_preconditioner = m.precond_rhs_evals;
+  s.rhs_evals_jacobian = m.jacobian_rhs_evals;
+  s.jacobian_evals = m.jacobian_evals;
+  s.linear_solves = m.solves;
   CVodeGetNumLinIters(m.mem, &s.linear_iterations);
-  CVodeGetNumPrecEvals(m.mem, &s.preconditioner_evals);
-  CVodeGetNumPrecSolves(m.mem, &s.preconditioner_solves);
   CVodeGetNumNonlinSolvIters(m.mem, &s.nonlinear_iterations);
   CVodeGetNumErrTestFails(m.mem, &s.error_test_failures);
   CVodeGetNumNonlinSolvConvFails(m.mem, &s.nonlinear_convergence_failures);

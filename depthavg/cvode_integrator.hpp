@@ -1,15 +1,24 @@
 // Time integration of dU/dt = F(U) (rhs.hpp) with SUNDIALS CVODE: variable-order BDF, Newton
-// iteration with the SPGMR Krylov solver (left preconditioning), tolerances as inputs. The only
-// file that talks to SUNDIALS; the SUNDIALS types stay behind a private implementation.
+// iteration, tolerances as inputs. The only file that talks to SUNDIALS; the SUNDIALS types stay
+// behind a private implementation.
 //
-// Preconditioner: P = I - gamma J_band, with J_band the Jacobian of F by coloured difference
-// quotients. Each cell's derivative depends on cells j-2 .. j+2, so cells 5 or more apart (cyclic
-// distance) can be perturbed together; about 10 evaluations of F give the whole periodic Jacobian.
-// The periodic wrap-around couples the first and last cells, which a band matrix cannot hold:
-// those entries are added to the diagonal cell's entry of the same column instead of dropped, so
-// P keeps the column sums of J, hence the total mass, and the Newton corrections stay conservative.
-// P is held as 2x2 blocks, one per pair of cells within the stencil, and factored by block LU
-// without pivoting (block_band.hpp): the same P as a band LU, at a fraction of the solve cost.
+// The Newton systems (I - gamma J) x = b (IntegratorParams::linear_solver):
+// - Direct (the default): J by coloured difference quotients. Each cell's derivative depends on
+//   cells j-2 .. j+2, so cells 5 or more apart (cyclic distance) can be perturbed together; about
+//   10 evaluations of F give the whole periodic Jacobian, wrap-around included. I - gamma J is
+//   factored exactly (periodic_block_band.hpp) and handed to CVODE as a direct linear solver of our
+//   own (a SUNLinearSolver of type DIRECT, with an opaque SUNMatrix: CVODE only passes it back).
+//   CVODE's modified Newton then reuses J over many steps (it asks for a fresh one after a
+//   convergence failure or 51 steps) and refactors when gamma changes by 30 %; one Newton
+//   iteration costs one F and one block solve. No Krylov vectors, no Jacobian-vector products.
+// - KrylovBand: SPGMR with the same factorisation as left preconditioner (the former default:
+//   about 2 linear iterations per Newton iteration, each a difference-quotient J v, a
+//   preconditioner solve and Gram-Schmidt dot products).
+// - Krylov: SPGMR unpreconditioned.
+//
+// Mass: F conserves the total of h exactly (flux form), so the columns of J sum to zero over the
+// h rows and 1_h^T (I - gamma J) = 1_h^T; the exact inverse keeps that, and the Newton corrections
+// change the total mass only at round-off.
 #pragma once
 
 #include <cstddef>
@@ -24,18 +33,18 @@ namespace granbench::depthavg {
 
 struct CvodeStats {
   long steps = 0;
-  long rhs_evals = 0;                 // by CVODE itself
-  long rhs_evals_jtimes = 0;          // difference-quotient Jacobian-vector products
-  long rhs_evals_preconditioner = 0;  // coloured difference-quotient band Jacobian
-  long linear_iterations = 0;
-  long preconditioner_evals = 0;
-  long preconditioner_solves = 0;
+  long rhs_evals = 0;           // by CVODE itself
+  long rhs_evals_jtimes = 0;    // difference-quotient Jacobian-vector products
+  long rhs_evals_jacobian = 0;  // coloured difference-quotient Jacobian
+  long jacobian_evals = 0;      // coloured Jacobians built (either solver)
+  long linear_solves = 0;       // factorised solves (Direct) or preconditioner solves (Krylov)
+  long linear_iterations = 0;   // Krylov only
   long nonlinear_iterations = 0;
   long error_test_failures = 0;
   long nonlinear_convergence_failures = 0;
   int last_order = 0;
   double last_step = 0.0;
-  long total_rhs_evals() const { return rhs_evals + rhs_evals_jtimes + rhs_evals_preconditioner; }
+  long total_rhs_evals() const { return rhs_evals + rhs_evals_jtimes + rhs_evals_jacobian; }
 };
 
 struct AdvanceResult {

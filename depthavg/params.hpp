@@ -30,9 +30,13 @@ struct SpaceParams {
   double frame_speed = 0.0;      // speed c of the computational frame x' = x - c t [m/s] (rhs.hpp)
 };
 
-// Left preconditioner of the SPGMR iteration: the coloured band Jacobian (cvode_integrator.hpp),
-// or none (near the CFL limit I - gamma J is close to the identity and GMRES converges anyway).
-enum class Preconditioner { Band, None };
+// How CVODE solves the Newton systems (I - gamma J) x = b of its BDF steps (cvode_integrator.hpp).
+// Direct: modified Newton with J the coloured difference-quotient Jacobian, factored exactly
+// (periodic_block_band.hpp) and refreshed when CVODE asks for it. KrylovBand: SPGMR, that
+// factorisation as left preconditioner, Jacobian-vector products by difference quotients.
+// Krylov: SPGMR without a preconditioner (near the CFL limit I - gamma J is close to the
+// identity and GMRES converges anyway).
+enum class LinearSolver { Direct, KrylovBand, Krylov };
 
 struct IntegratorParams {
   double rtol = 1e-6;
@@ -45,8 +49,8 @@ struct IntegratorParams {
   // so it is the choice at moderate tolerances; at tight ones (linear measurements) the accuracy
   // limit is far below that band and order 5 is cheaper. docs/performance.md has the measurements.
   int max_order = 5;
-  double eps_lin = 0.05;  // CVODE's linear-solver tolerance factor
-  Preconditioner preconditioner = Preconditioner::Band;
+  LinearSolver linear_solver = LinearSolver::Direct;
+  double eps_lin = 0.05;  // CVODE's linear-solver tolerance factor (the Krylov solvers only)
 };
 
 enum class InitKind { Sine, Eigenmode };

@@ -2,19 +2,22 @@
 // gravity. The velocity form of the momentum advection cannot do this: every face the droplet
 // moves into starts with the light fluid's velocity, and the droplet's downward velocity, spread
 // by the upwinding into light-fluid faces, is removed there by the projection at no cost (their
-// mass is 1e4 times smaller). In the §7 rollwaves such a droplet, thrown off a steep front, rode
-// the light fluid's updraft to the open top and the run diverged (docs/twod-validation.md §8).
-// With momentum carried by the VOF step's mass fluxes (SolverParams::consistent_momentum, the
-// default) the droplet keeps its momentum and falls.
+// mass is 1e5 times smaller); with the default light fluid (0.015 kg/m^3) the velocity form does
+// not even finish: the droplet's faces reach tens of m/s within 7 ms and the run diverges. In the
+// §7 rollwaves such a droplet, thrown off a steep front, rode the light fluid's updraft to the open
+// top and the run diverged (docs/twod-validation.md §8). With momentum carried by the VOF step's
+// mass fluxes (SolverParams::consistent_momentum, the default) the droplet keeps its momentum and
+// falls.
 //
 // Set-up: a 3 x 3-cell square of grains (f = 1) at mid-height of a 32 x 32 box (4 mm square,
 // gravity 9.81 m/s^2 straight down, zeta = 0) of light fluid, everything moving at u = 1.2 m/s,
 // as the surface layer does; the droplet crosses a cell in about 3 steps. After 20 ms a free
 // fall would take its centroid down by g t^2 / 2 = 1.96 mm (drag in the light fluid of
-// 1e-4 Pa s is small at this size and speed).
+// 1e-5 Pa s is small at this size and speed).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "tests/support/verification_table.hpp"
 #include "twod/solver.hpp"
@@ -25,8 +28,9 @@ namespace vt = granbench::testing;
 
 namespace {
 struct Drop {
-  double centroid_drop;  // how far the grains' centroid fell [m]
-  double volume_error;   // relative change of the grain volume
+  double centroid_drop = 0.0;  // how far the grains' centroid fell [m]
+  double volume_error = 0.0;   // relative change of the grain volume
+  std::string failure;         // the solver's message when the run diverged
 };
 
 double centroid_height(const Grid& g, const std::vector<double>& f, double& volume) {
@@ -52,9 +56,13 @@ Drop falling_droplet(bool consistent) {
   double v0 = 0.0, v1 = 0.0;
   const double z0 = centroid_height(g, s.f, v0);
   Solver solver(g, params, s);
-  solver.advance_to(0.02);
+  try {
+    solver.advance_to(0.02);
+  } catch (const DivergenceError& e) {
+    return {0.0, 0.0, e.what()};
+  }
   const double z1 = centroid_height(g, solver.state().f, v1);
-  return {z0 - z1, (v1 - v0) / v0};
+  return {z0 - z1, (v1 - v0) / v0, ""};
 }
 }  // namespace
 
@@ -69,11 +77,15 @@ TEST(ConsistentMomentum, ADropletOfGrainsMovingAcrossTheGridFallsUnderGravity) {
       {"momentum carried by", "fall [mm]", "fraction of free fall", "volume error"});
   table.row({"mass fluxes (default)", vt::fixed(1e3 * consistent.centroid_drop, 3),
              vt::fixed(consistent.centroid_drop / free_fall, 3), vt::sci(consistent.volume_error)});
-  table.row({"velocity", vt::fixed(1e3 * velocity.centroid_drop, 3),
-             vt::fixed(velocity.centroid_drop / free_fall, 3), vt::sci(velocity.volume_error)});
+  if (velocity.failure.empty())
+    table.row({"velocity", vt::fixed(1e3 * velocity.centroid_drop, 3),
+               vt::fixed(velocity.centroid_drop / free_fall, 3), vt::sci(velocity.volume_error)});
+  else
+    table.row({"velocity", velocity.failure, "-", "-"});
   table.bound(
       "default: the droplet falls at least 80 % of the free-fall distance; volume kept to "
       "1e-12");
+  ASSERT_TRUE(consistent.failure.empty()) << consistent.failure;
   EXPECT_GT(consistent.centroid_drop, 0.8 * free_fall);
   EXPECT_LT(consistent.centroid_drop, 1.05 * free_fall);
   EXPECT_LT(std::abs(consistent.volume_error), 1e-12);

@@ -21,8 +21,10 @@ using granbench::testing::random_vector;
 namespace {
 
 // Face coefficients area/(distance rho) for heavy grains (rho 1500) under a light fluid
-// (rho 0.15), the surface a sine across the columns, on a 1 mm x 0.25 mm grid.
-PoissonLevel layered_operator(int nx, int nz) {
+// (rho_light: 0.15, the former default, a 1e4 density jump; 0.015, the default, 1e5; 1.5e-3, 1e6,
+// the lightest fluid of the light-fluid study), the surface a sine across the columns, on a 1 mm x
+// 0.25 mm grid.
+PoissonLevel layered_operator(int nx, int nz, double rho_light) {
   PoissonLevel L;
   L.nx = nx;
   L.nz = nz;
@@ -31,12 +33,12 @@ PoissonLevel layered_operator(int nx, int nz) {
   const double dx = 1e-3, dz = 2.5e-4;
   auto rho = [&](double x, double z) {
     const double h = 0.5 * nz * dz * (1.0 + 0.2 * std::sin(2.0 * M_PI * x / (nx * dx)));
-    return z < h ? 1500.0 : 0.15;
+    return z < h ? 1500.0 : rho_light;
   };
   for (int i = 0; i < nx; ++i) {
     for (int k = 0; k < nz; ++k) L.cx[L.cell(i, k)] = (dz / dx) / rho(i * dx, (k + 0.5) * dz);
     for (int k = 1; k < nz; ++k) L.cz[L.zface(i, k)] = (dx / dz) / rho((i + 0.5) * dx, k * dz);
-    L.cz[L.zface(i, nz)] = 2.0 * (dx / dz) / 0.15;  // p = 0 half a cell above the top row
+    L.cz[L.zface(i, nz)] = 2.0 * (dx / dz) / rho_light;  // p = 0 half a cell above the top row
   }
   return L;
 }
@@ -64,41 +66,46 @@ TEST(PressureMultigrid, SymmetricPositivePreconditionerOnEveryColumnGrouping) {
   // nx = 24: 12 columns per colour, 3 groups of four; 26: 13, a remainder of one; 30: 15, a
   // remainder of three; 33: odd, the last column alone. Large enough levels (>= 2048 cells)
   // take the parallel path; the smaller ones the serial one, with the same groups.
-  for (int nx : {24, 26, 30, 33, 160}) {
-    SCOPED_TRACE(nx);
-    const int nz = nx == 160 ? 64 : 16;
-    PressureMultigrid mg;
-    mg.set_operator(layered_operator(nx, nz));
-    const int n = nx * nz;
-    const Eigen::VectorXd r1 = random_vector(n, 1), r2 = random_vector(n, 2);
-    Eigen::VectorXd z1, z2;
-    mg.precondition(r1, z1);
-    mg.precondition(r2, z2);
-    EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-10 * std::abs(r1.dot(z2)));
-    EXPECT_GT(r1.dot(z1), 0.0);
-    EXPECT_GT(r2.dot(z2), 0.0);
-  }
+  for (const double rho_light : {0.15, 0.015, 1.5e-3})
+    for (int nx : {24, 26, 30, 33, 160}) {
+      SCOPED_TRACE(nx);
+      SCOPED_TRACE(rho_light);
+      const int nz = nx == 160 ? 64 : 16;
+      PressureMultigrid mg;
+      mg.set_operator(layered_operator(nx, nz, rho_light));
+      const int n = nx * nz;
+      const Eigen::VectorXd r1 = random_vector(n, 1), r2 = random_vector(n, 2);
+      Eigen::VectorXd z1, z2;
+      mg.precondition(r1, z1);
+      mg.precondition(r2, z2);
+      EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-10 * std::abs(r1.dot(z2)));
+      EXPECT_GT(r1.dot(z1), 0.0);
+      EXPECT_GT(r2.dot(z2), 0.0);
+    }
 }
 
 TEST(PressureMultigrid, PreconditionedCgMatchesADirectSolve) {
-  for (int nx : {26, 33, 160}) {
-    SCOPED_TRACE(nx);
-    const int nz = nx == 160 ? 32 : 16;
-    const PoissonLevel L = layered_operator(nx, nz);
-    PressureMultigrid mg;
-    mg.set_operator(L);
-    const Eigen::VectorXd b = random_vector(nx * nz, 3);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz);
-    PcgWorkspace work;
-    const int it = pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { L.apply(v, y); },
-                       [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg.precondition(r, z); },
-                       b, x, 1e-12, 200, work);
-    ASSERT_GT(it, 0);
-    EXPECT_LT(it, 40);  // a working multigrid needs a few tens at most, plain CG thousands
-    const Eigen::SparseMatrix<double> A = assembled(L);
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
-    ASSERT_EQ(llt.info(), Eigen::Success);
-    const Eigen::VectorXd exact = llt.solve(b);
-    EXPECT_LT((x - exact).norm(), 1e-8 * exact.norm());
-  }
+  for (const double rho_light : {0.15, 0.015, 1.5e-3})
+    for (int nx : {26, 33, 160}) {
+      SCOPED_TRACE(nx);
+      SCOPED_TRACE(rho_light);
+      const int nz = nx == 160 ? 32 : 16;
+      const PoissonLevel L = layered_operator(nx, nz, rho_light);
+      PressureMultigrid mg;
+      mg.set_operator(L);
+      const Eigen::VectorXd b = random_vector(nx * nz, 3);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz);
+      PcgWorkspace work;
+      const int it =
+          pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { L.apply(v, y); },
+              [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg.precondition(r, z); }, b, x,
+              1e-12, 200, work);
+      ASSERT_GT(it, 0);
+      EXPECT_LT(it, 40);  // a working multigrid needs a few tens at most, plain CG thousands
+      const Eigen::SparseMatrix<double> A = assembled(L);
+      Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
+      ASSERT_EQ(llt.info(), Eigen::Success);
+      const Eigen::VectorXd exact = llt.solve(b);
+      EXPECT_LT((x - exact).norm(), 1e-8 * exact.norm());
+    }
 }

@@ -123,12 +123,16 @@ struct CvodeIntegrator::Impl {
     return static_cast<Impl*>(data)->setup(yv, fy, jok, jcur, gamma);
   }
 
+  // x = P^{-1} b: the preconditioner solve of SPGMR and the whole solve of Direct.
+  void solve(N_Vector b, N_Vector x) {
+    N_VScale(1.0, b, x);
+    P.solve(span_of(x));
+    ++solves;
+  }
+
   static int psolve(sunrealtype, N_Vector, N_Vector, N_Vector r, N_Vector z, sunrealtype,
                     sunrealtype, int, void* data) {
-    auto* self = static_cast<Impl*>(data);
-    N_VScale(1.0, r, z);
-    self->P.solve(self->span_of(z));
-    ++self->solves;
+    static_cast<Impl*>(data)->solve(r, z);
     return 0;
   }
 
@@ -145,10 +149,7 @@ struct CvodeIntegrator::Impl {
   static SUNLinearSolver_ID direct_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
   static int direct_setup(SUNLinearSolver, SUNMatrix) { return SUNLS_SUCCESS; }
   static int direct_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector b, sunrealtype) {
-    auto* self = static_cast<Impl*>(S->content);
-    N_VScale(1.0, b, x);
-    self->P.solve(self->span_of(x));
-    ++self->solves;
+    static_cast<Impl*>(S->content)->solve(b, x);
     return SUNLS_SUCCESS;
   }
   static int direct_free(SUNLinearSolver S) {

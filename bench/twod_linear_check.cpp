@@ -16,6 +16,7 @@
 //     rheology=mui|newton nu=<m^2/s> zeta=28.5 h0=0.004 Lx=0.08 Lz=2 (in h0) nx=160 nz=32
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
+//     frame=0 (grid speed / base surface speed)
 //     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=0
 //     interface_p=cell|extrapolated
 //     (defaults: the solver's, twod/parameters.hpp)
@@ -206,7 +207,9 @@ int main(int argc, char** argv) {
     return base_u(zc, h0) + (std::polar(a0, k * x) * uh).real();
   };
 
-  const twod::Grid grid(nx, nz, Lx, Lz);
+  twod::Grid grid(nx, nz, Lx, Lz);
+  // the grid's speed as a fraction of the base surface speed (twod/frame.hpp); 0: the lab frame
+  grid.frame_speed = a.num("frame", 0.0) * base_u(h0, h0);
   twod::Solver solver(grid, params, twod::make_initial_state(grid, ic, params));
 
   const double period = Lx / mode / std::abs(lambda.imag() / k);
@@ -322,7 +325,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < nx; ++i) enmax = std::max(enmax, P.eta_n[grid.at(i, kk)]);
       for (int i = 0; i < nx; ++i) {
         const std::size_t c = grid.at(i, kk);
-        um += S.u[c] / nx;
+        um += (S.u[c] + grid.frame_speed) / nx;  // lab frame
         fm += S.f[c] / nx;
         em += P.eta_c[c] / nx;
         im += P.I_c[c] / nx;

@@ -11,6 +11,8 @@
 //   bench_twod_rollwave                 256x64 to t = 1 s, 512x128 to t = 0.05 s
 //   bench_twod_rollwave T1 T2           the two end times [s] (0 skips a grid)
 //   bench_twod_rollwave T1 T2 1,2       each grid once per thread count, back to back
+//   bench_twod_rollwave T1 T2 1,2 F     the grid moving at F times the steady surface speed
+//                                       (default 0.5, as granbench's runs; 0: the lab frame)
 // Without the third argument the thread count is OpenMP's default (OMP_NUM_THREADS or all
 // cores). The results are identical for every thread count (twod/parallel.hpp); only the times
 // differ. Timing on a loaded machine is meaningless: check `uptime` first.
@@ -70,14 +72,15 @@ double triad_bandwidth(int threads) {
   return 3.0 * 8.0 * double(n) / best / 1e9;
 }
 
-nlohmann::json run(int nx, int nz, double t_end, int threads) {
+nlohmann::json run(int nx, int nz, double t_end, int threads, double frame_fraction) {
   SolverParams params;
   params.zeta = degrees_to_radians(28.5);
   params.threads = threads;
   const double h0 = 4e-3, Lx = 0.08, a0 = 2e-4;
   const MuCurve curve(CurveKind::Regularised, params.rheology.material, h0);
   const SteadyState steady = steady_state(curve, params.zeta, h0);
-  const Grid g(nx, nz, Lx, 2.0 * h0);
+  Grid g(nx, nz, Lx, 2.0 * h0);
+  g.frame_speed = frame_fraction * steady.u_surface;  // (twod/frame.hpp)
   Solver solver(g, params, make_initial_state(g, perturbed_bagnold(steady, a0, Lx), params));
   const auto w0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
@@ -87,6 +90,7 @@ nlohmann::json run(int nx, int nz, double t_end, int threads) {
   const RunStatistics st = solver.statistics();
   const double updates = double(st.steps) * double(g.cells());
   return {{"threads", threads},
+          {"frame_speed", g.frame_speed},
           {"nx", nx},
           {"nz", nz},
           {"t_end", t_end},
@@ -121,6 +125,11 @@ int main(int argc, char** argv) {
   } else {
     thread_counts.push_back(thread_count());
   }
+  const double frame_fraction = argc > 4 ? std::atof(argv[4]) : 0.5;
+  if (!(frame_fraction >= 0.0 && frame_fraction <= 1.0)) {
+    std::cerr << "bench_twod_rollwave: the frame fraction must be in [0, 1]\n";
+    return 2;
+  }
   nlohmann::json out = {{"case", "rollwave Lx=0.08 zeta=28.5 h0=4mm a0=0.2mm Lz=2h0 regularised"},
                         {"hardware_threads", std::thread::hardware_concurrency()},
                         {"triad_bandwidth_GB_per_s", nlohmann::json::object()},
@@ -133,7 +142,7 @@ int main(int argc, char** argv) {
   for (auto [nx, nz, t] : {std::tuple{256, 64, t1}, std::tuple{512, 128, t2}}) {
     if (t <= 0.0) continue;
     for (int threads : thread_counts) {
-      nlohmann::json r = run(nx, nz, t, threads);
+      nlohmann::json r = run(nx, nz, t, threads, frame_fraction);
       const double bw = out["triad_bandwidth_GB_per_s"][std::to_string(threads)];
       r["triad_bandwidth_GB_per_s"] = bw;
       r["bytes_per_cell_update_at_triad_bandwidth"] =

@@ -68,6 +68,13 @@ std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverPar
                                                                     {"Lz", {c.grid.Lz, g.Lz}}};
   for (const auto& [name, v] : grid)
     if (differs(v.first, v.second)) return text(name, v.first, v.second);
+  if (differs(c.grid.frame_speed, g.frame_speed)) {  // the co-moving frame (frame.hpp)
+    std::ostringstream s;
+    s.precision(6);
+    s << "twod-frame: the checkpoint has a grid moving at " << c.grid.frame_speed
+      << " m/s, this run " << g.frame_speed << " m/s";
+    return s.str();
+  }
   return {};
 }
 
@@ -92,6 +99,7 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
   scalar("nz", g.nz);
   scalar("Lx", g.Lx);
   scalar("Lz", g.Lz);
+  scalar("frame_speed", g.frame_speed);
   if (series.nt() > 0) write_surface_series(out, "/surface", series);
   const WarmStart w = solver.warm_start();
   if (!w.viscous_increment.empty()) {
@@ -117,6 +125,8 @@ Checkpoint read_checkpoint(const std::string& path) {
   };
   Checkpoint c;
   c.grid = Grid(int(scalar("nx")), int(scalar("nz")), scalar("Lx"), scalar("Lz"));
+  // (checkpoints from before the co-moving frame were written in the lab frame)
+  if (h5_has(path, "/state/frame_speed")) c.grid.frame_speed = scalar("frame_speed");
   c.state = Fields(c.grid);
   c.state.u = h5_read_doubles(path, "/state/u");
   c.state.w = h5_read_doubles(path, "/state/w");

@@ -28,7 +28,8 @@ std::vector<double> depth_averaged_velocity(const Grid& g, const Fields& s) {
       const double uc = 0.5 * (s.u[g.at(i, k)] + s.u[g.at(i + 1, k)]);
       q[i] += s.f[g.at(i, k)] * uc * g.dz;
     }
-  for (int i = 0; i < g.nx; ++i) q[i] = h[i] > 0.0 ? q[i] / h[i] : 0.0;
+  // in the lab frame: the grid moves at frame_speed (grid.hpp)
+  for (int i = 0; i < g.nx; ++i) q[i] = h[i] > 0.0 ? q[i] / h[i] + g.frame_speed : 0.0;
   return q;
 }
 

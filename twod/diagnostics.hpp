@@ -12,9 +12,10 @@ namespace granbench::twod {
 
 // h_i = sum_k f_ik dz (column integral of the volume fraction).
 std::vector<double> surface_heights(const Grid& g, const std::vector<double>& f);
-// u_bar_i = (sum_k f u dz) / h_i with u averaged to cell centres (0 where h_i = 0).
+// u_bar_i = (sum_k f u dz) / h_i with u averaged to cell centres (0 where h_i = 0), in the lab
+// frame (u + Grid::frame_speed); column i of the grid, wherever it is in the lab (frame.hpp).
 std::vector<double> depth_averaged_velocity(const Grid& g, const Fields& s);
-// Mean over x of the granular flux  int f u dz  [m^2/s].
+// Mean over x of the granular flux  int f u dz  [m^2/s], in the lab frame.
 double mean_flux(const Grid& g, const Fields& s);
 double granular_volume(const Grid& g, const std::vector<double>& f);  // sum f V [m^2]
 double max_speed(const Fields& s);

@@ -8,6 +8,11 @@
 //   eta_n, tau_xz  at corners       (i dx, k dz),                  k <= nz
 //
 // All arrays are row-major in k (index k nx + i); periodicity is folded into wrap().
+//
+// The grid may move downslope at frame_speed U (the co-moving frame, twod/frame.hpp): the
+// equations are Galilean invariant and the domain periodic, so only the bed changes, to a wall
+// moving at -U. Velocities in the solver are then relative to the grid; twod/frame.hpp turns
+// them and the positions back into the lab frame for every output.
 #pragma once
 
 #include <cstddef>
@@ -18,6 +23,7 @@ struct Grid {
   int nx = 0, nz = 0;
   double Lx = 0.0, Lz = 0.0;
   double dx = 0.0, dz = 0.0;
+  double frame_speed = 0.0;  // the grid's downslope speed relative to the bed [m/s]
 
   Grid() = default;
   Grid(int nx_, int nz_, double Lx_, double Lz_)
@@ -32,6 +38,7 @@ struct Grid {
   double xc(int i) const { return (i + 0.5) * dx; }
   double zc(int k) const { return (k + 0.5) * dz; }
   double cell_volume() const { return dx * dz; }
+  double bed_velocity() const { return -frame_speed; }  // the bed's u in the grid's frame
 };
 
 // The domain height, close to Lz_over_h0 h0, that puts a surface of height h0 in the middle of a

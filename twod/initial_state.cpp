@@ -9,7 +9,8 @@
 // continuity equation from the bed, w_{k+1} = w_k - dz (u_{i+1,k} - u_{i,k})/dx, so the
 // initial field is divergence free on the grid and kinematically consistent with (7.2). The
 // pressure is the discrete hydrostatic balance of the cell densities (equal to (5.4) inside
-// the grains), so a layer at rest starts in exact equilibrium.
+// the grains), so a layer at rest starts in exact equilibrium. On a moving grid (grid.hpp) u is
+// taken relative to it; at t = 0 the grid and the lab coincide.
 #include "twod/initial_state.hpp"
 
 #include <algorithm>
@@ -61,7 +62,8 @@ Fields make_initial_state(const Grid& g, const InitialCondition& ic, const Solve
       s.f[g.at(i, k)] = sum / kSub;
     }
   for (int k = 0; k < g.nz; ++k)
-    for (int i = 0; i < g.nx; ++i) s.u[g.at(i, k)] = ic.velocity(i * g.dx, g.zc(k));
+    for (int i = 0; i < g.nx; ++i)  // ic is in the lab frame; the grid's u is relative to it
+      s.u[g.at(i, k)] = ic.velocity(i * g.dx, g.zc(k)) - g.frame_speed;
   for (int i = 0; i < g.nx; ++i)
     for (int k = 0; k < g.nz; ++k)  // discrete continuity from the bed (w = 0 there)
       s.w[g.at(i, k + 1)] = s.w[g.at(i, k)] - g.dz * (s.u[g.at(i + 1, k)] - s.u[g.at(i, k)]) / g.dx;

@@ -2,7 +2,9 @@
 // x-faces, w from its two z-faces) and stored [nz][nx], with x and z node coordinates, so that
 // the XDMF "2DRectMesh" (VXVY geometry) with cell-centred attributes describes them exactly.
 // The XDMF file is a temporal collection of one grid per snapshot, each pointing into the HDF5
-// file as "file.h5:/snapshots/NNNN/<field>".
+// file as "file.h5:/snapshots/NNNN/<field>". A run on a moving grid (grid.hpp) is written in the
+// lab frame: its columns rolled into place and u + U, with each snapshot's own node coordinates
+// (/snapshots/NNNN/xz_nodes, x offset by its x_offset attribute, under half a cell).
 #include "twod/output.hpp"
 
 #include <cmath>
@@ -15,6 +17,7 @@
 #include <stdexcept>
 
 #include "twod/diagnostics.hpp"
+#include "twod/frame.hpp"
 #include "twod/viscosity_mixing.hpp"
 
 namespace granbench::twod {
@@ -36,6 +39,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("nz", g.nz);
   a("Lx", g.Lx);
   a("Lz", g.Lz);
+  a("frame_speed", g.frame_speed);  // the grid's speed; the outputs are in the lab frame
   a("angle_deg", p.zeta * 180.0 / std::numbers::pi);
   out.attribute(group, "curve", std::string(curve_name(r.curve)));
   for (const MaterialConstant& c : material_constants) a(c.key, m.*c.value);
@@ -62,6 +66,19 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
                                                                           : "cell-average"));
 }
 
+namespace {
+// The node coordinates as one (nz+1, nx+1, 2) array of (x, z), x fastest, x shifted by
+// x_offset: the 2DSMesh/XY geometry that all three ParaView XDMF readers open (the legacy reader
+// shows 2DRectMesh blank and its Glyph filter crashes on it; shared/reports/paraview.md).
+std::vector<double> node_coordinates(const Grid& g, double x_offset) {
+  std::vector<double> xz;
+  xz.reserve(2 * std::size_t(g.nx + 1) * std::size_t(g.nz + 1));
+  for (int k = 0; k <= g.nz; ++k)
+    for (int i = 0; i <= g.nx; ++i) xz.insert(xz.end(), {i * g.dx + x_offset, k * g.dz});
+  return xz;
+}
+}  // namespace
+
 SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::string xdmf_path,
                                const Grid& g)
     : out_(out), h5_name_(std::move(h5_file_name)), xdmf_path_(std::move(xdmf_path)), g_(g) {
@@ -71,14 +88,7 @@ SnapshotWriter::SnapshotWriter(H5Writer& out, std::string h5_file_name, std::str
   for (int k = 0; k <= g.nz; ++k) zn[k] = k * g.dz;
   out_.write("/snapshots/x_nodes", xn);
   out_.write("/snapshots/z_nodes", zn);
-  // The node coordinates as one (nz+1, nx+1, 2) array of (x, z), x fastest: the 2DSMesh/XY
-  // geometry that all three ParaView XDMF readers open (the legacy reader shows 2DRectMesh blank
-  // and its Glyph filter crashes on it; shared/reports/paraview.md).
-  std::vector<double> xz;
-  xz.reserve(2 * xn.size() * zn.size());
-  for (double z : zn)
-    for (double x : xn) xz.insert(xz.end(), {x, z});
-  out_.write("/snapshots/xz_nodes", xz, {zn.size(), xn.size(), 2});
+  out_.write("/snapshots/xz_nodes", node_coordinates(g, 0.0), {g.nz + 1u, g.nx + 1u, 2});
 }
 
 void SnapshotWriter::write(const Solver& solver) {
@@ -98,13 +108,30 @@ void SnapshotWriter::write(const Solver& solver) {
   std::vector<double> I = props.I_c;
   for (double& v : I)
     if (!std::isfinite(v)) v = std::nan("");  // p <= 0: I undefined
+  // In the lab frame (frame.hpp): the grid's columns rolled to where they are in the lab, their
+  // centres offset by less than half a cell (this snapshot's own node coordinates), u + U.
+  const ColumnShift shift = lab_column_shift(g, s.t);
+  auto lab = [&](const std::vector<double>& v, double add = 0.0) {
+    if (g.frame_speed == 0.0) return v;
+    std::vector<double> out(v.size());
+    for (int k = 0; k < g.nz; ++k)
+      for (int i = 0; i < g.nx; ++i) out[g.at(i + shift.shift, k)] = v[g.at(i, k)] + add;
+    return out;
+  };
+  uc = lab(uc, g.frame_speed);
+  wc = lab(wc);
   out_.write(grp + "/u", uc, dims);
   out_.write(grp + "/w", wc, dims);
-  out_.write(grp + "/p", s.p, dims);
-  out_.write(grp + "/f", s.f, dims);
-  out_.write(grp + "/I", I, dims);
-  out_.write(grp + "/eta", props.eta_c, dims);
-  out_.write(grp + "/C", ill_posedness_field(props.I_c, solver.viscosity_model().curve()), dims);
+  out_.write(grp + "/p", lab(s.p), dims);
+  out_.write(grp + "/f", lab(s.f), dims);
+  out_.write(grp + "/I", lab(I), dims);
+  out_.write(grp + "/eta", lab(props.eta_c), dims);
+  out_.write(grp + "/C", lab(ill_posedness_field(props.I_c, solver.viscosity_model().curve())),
+             dims);
+  if (g.frame_speed != 0.0) {
+    out_.write(grp + "/xz_nodes", node_coordinates(g, shift.remainder), {g.nz + 1u, g.nx + 1u, 2});
+    out_.attribute(grp, "x_offset", shift.remainder);
+  }
   // (u, w, 0) per cell, so that Glyph and Stream Tracer work without a Calculator.
   std::vector<double> velocity;
   velocity.reserve(3 * uc.size());
@@ -136,7 +163,9 @@ void SnapshotWriter::finish() const {
       x << "   <Grid Name=\"t" << n << "\" GridType=\"Uniform\">\n"
         << "    <Time Value=\"" << times_[n] << "\"/>\n"
         << "    <Topology TopologyType=\"2DSMesh\" Dimensions=\"" << nodes << "\"/>\n"
-        << "    <Geometry GeometryType=\"XY\">\n     " << item(nodes + " 2", "/snapshots/xz_nodes")
+        << "    <Geometry GeometryType=\"XY\">\n     "
+        << item(nodes + " 2", g_.frame_speed != 0.0 ? std::string(grp) + "/xz_nodes"
+                                                    : std::string("/snapshots/xz_nodes"))
         << "\n    </Geometry>\n";
       for (const char* f : {"u", "w", "p", "f", "I", "eta", "C"})
         x << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n     "

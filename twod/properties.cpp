@@ -13,7 +13,8 @@
 // gamma = du/dz + dw/dx exact at corners. eta at a cell centre uses the corner gammas averaged
 // to the centre; eta at a corner uses the cell D_xx, D_zz averaged to the corner and p, f
 // averaged from the surrounding cells (p extrapolated linearly to the bed, p = 0 on the top).
-// Boundaries: no slip at the bed (ghost u = -u, so gamma = 2u/dz), du/dz = 0 at the top
+// Boundaries: no slip at the bed (ghost u = 2 u_bed - u, so gamma = 2 (u - u_bed)/dz; u_bed = 0
+// unless the grid moves, grid.hpp), du/dz = 0 at the top
 // (gamma = dw/dx there).
 //
 // Mixing in interface cells (Rheology::mixing, see parameters.hpp): arithmetic
@@ -138,7 +139,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) / g.dx;
       double dudz;
       if (k == 0)
-        dudz = 2.0 * u[g.at(i, 0)] / g.dz;
+        dudz = 2.0 * (u[g.at(i, 0)] - g.bed_velocity()) / g.dz;
       else if (k == nz)
         dudz = 0.0;
       else

@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "twod/frame.hpp"
+
 namespace granbench::twod {
 
 namespace {
@@ -43,7 +45,9 @@ RunResult run(Solver& solver, SurfaceSeries series, const RunSchedule& schedule,
   double I_lo = std::numeric_limits<double>::infinity(), I_hi = 0.0;
   auto take_sample = [&] {
     const Fields& s = solver.state();
-    r.series.append(s.t, surface_heights(g, s.f), depth_averaged_velocity(g, s));
+    // the series is in the lab frame (frame.hpp), whatever frame the solver runs in
+    r.series.append(s.t, columns_in_lab_frame(g, s.t, surface_heights(g, s.f)),
+                    columns_in_lab_frame(g, s.t, depth_averaged_velocity(g, s)));
     if (hooks.sample) hooks.sample(solver, r.series);
   };
 

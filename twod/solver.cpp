@@ -41,6 +41,7 @@
 #include <sstream>
 
 #include "twod/diagnostics.hpp"
+#include "twod/frame.hpp"
 #include "twod/momentum_advection.hpp"
 #include "twod/parallel.hpp"
 #include "twod/surface_row_pressure.hpp"
@@ -223,7 +224,8 @@ void Solver::check_health() const {
         break;
       }
   if (bad_rows == 0) return;
-  auto fail = [&](const char* what, double value, double x, double z) {
+  auto fail = [&](const char* what, double value, double x_grid, double z) {
+    const double x = lab_position(g_, x_grid, s_.t);  // (frame.hpp)
     std::ostringstream m;
     m << "diverged at t = " << s_.t << " s: " << what << " = " << value << " at x = " << x
       << " m, z = " << z << " m (step " << stats_.steps << ")";
@@ -234,7 +236,7 @@ void Solver::check_health() const {
       const std::size_t c = g_.at(i, k);
       const double u = s_.u[c], w = s_.w[g_.at(i, k + 1)];
       if (!std::isfinite(u) || std::abs(u) > params_.velocity_limit)
-        fail("u", u, i * g_.dx, g_.zc(k));
+        fail("u", u + g_.frame_speed, i * g_.dx, g_.zc(k));  // lab-frame u
       if (!std::isfinite(w) || std::abs(w) > params_.velocity_limit)
         fail("w", w, g_.xc(i), (k + 1) * g_.dz);
       if (!std::isfinite(s_.p[c])) fail("p", s_.p[c], g_.xc(i), g_.zc(k));

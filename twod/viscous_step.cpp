@@ -20,7 +20,8 @@
 // the system  (rho V/dt) u* - V div(2 eta D(u*)) = rhs  is symmetric positive definite. Its rows
 // are written out in viscous_operator.cpp; with the default line-relaxation preconditioner it
 // is never assembled.
-// Boundaries: at the bed u* ghost = -u* (gamma = 2u/dz on a half volume) and w = 0; at the top
+// Boundaries: at the bed u* ghost = 2 u_bed - u* (gamma = 2 (u - u_bed)/dz on a half volume; u_bed
+// = 0 unless the grid moves) and w = 0; at the top
 // du/dz = 0, with the top w (and its dw/dx in tau_xz) lagged at w^n.
 // The pressure gradient and gravity sit on the same faces with the same rho as in the projection
 // (balanced force), so a hydrostatic p^n cancels gravity exactly.
@@ -123,6 +124,12 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     explicit_stress_.apply(x_old_, y_);
     parallel_difference(b_, y_, b_);
   }
+  // A moving bed (the co-moving frame, grid.hpp): ghost u = 2 u_bed - u, so the bed corner's
+  // stress K (2/dz)(u - u_bed) has the known part -K (2/dz) u_bed, with the full eta_n (its
+  // implicit and explicit parts together).
+  if (g.bed_velocity() != 0.0)
+    for (int i = 0; i < nx; ++i)
+      b_[op_.u_index(i, 0)] += 2.0 * props.eta_n[g.at(i, 0)] * V / (g.dz * g.dz) * g.bed_velocity();
   // Known values at the top: w^n on the top face in the top cell's D_zz, and the top corner's
   // tau_xz = eta (dw/dx) (du/dz = 0 there).
   const double ix = 1.0 / g.dx, iz = 1.0 / g.dz;

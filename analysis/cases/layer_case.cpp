@@ -74,6 +74,7 @@ LayerCaseSpec layer_case_spec(const CaseFile& f, const std::string& res) {
 
   // The solver settings of the case file (the 2D settings of every command, twod_settings.hpp).
   TwodSettings settings;
+  settings.frame_fraction = 0.0;  // layers at rest or far from steady: solved in the lab frame
   if (f.has("eta_max", res)) settings.eta_max = f.number_in("eta_max", res, 1e-6, 1e12);
   if (f.has("eta_min", res)) settings.eta_min = f.number_in("eta_min", res, 1e-9, 1e6);
   if (f.has("D_min", res)) settings.D_min = f.number_in("D_min", res, 1e-15, 1.0);

@@ -43,6 +43,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   twod.nx = o.nx > 0 ? o.nx : res.twod_nx;
   twod.nz = o.nz > 0 ? o.nz : res.twod_nz;
   twod.viscosity_passes = o.viscosity_passes;
+  twod.frame_fraction = o.twod_frame;
   // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of
   // this tool on a workstation should ask for; beyond it the allocation would fail mid-run.
   constexpr long kMaxTwodCells = 1L << 22;

@@ -36,6 +36,11 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
                  "the lab frame; output is in the lab frame")
       ->check(one_of({"linear", "0"}))
       ->capture_default_str();
+  sub.add_option("--twod-frame", o.twod_frame,
+                 "2D grid's speed as a fraction of the steady surface speed, in [0, 1]; 0.5 about "
+                 "halves the steps, 0 is the lab frame; output is in the lab frame either way")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
                  "(1 is second order in time already; more passes cost n times as much)")

@@ -24,6 +24,7 @@ struct CompareOptions {
   std::size_t nx_depthavg = 0;         // 0: from --resolution
   std::string frame_speed = "linear";  // depth-averaged frame: linear (co-moving) or 0 (lab)
   int viscosity_passes = 1;
+  double twod_frame = 0.5;  // the 2D grid's speed / surface speed (TwodSettings::frame_fraction)
 };
 
 // Adds the options of this file's struct (not the flow and output options) to `sub`.

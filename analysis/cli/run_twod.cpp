@@ -60,8 +60,9 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   // --- options, paths and the restart, all before any work ---
   double Lz = 0.0;
   const SolverParams params = twod_run_params(o, mo, Lz);
-  const Grid grid(int(o.nx), mo.settings.nz, o.Lx, Lz);
   const SteadyState base = o.flow.steady();
+  Grid grid(int(o.nx), mo.settings.nz, o.Lx, Lz);
+  grid.frame_speed = mo.settings.frame_fraction * base.u_surface;  // (twod/frame.hpp)
   const std::vector<std::string> warnings = twod_warnings(base, grid.dz);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   const double wavelength = o.Lx / o.mode;

@@ -41,7 +41,8 @@ void refuse_options_that_do_not_apply(const SweepOptions& o, const CLI::App& app
                         {"--chi", {"depthavg", "both"}},
                         {"--frame-speed", {"depthavg", "both"}},
                         {"--resolution", {"twod", "both"}},
-                        {"--viscosity-passes", {"twod", "both"}}};
+                        {"--viscosity-passes", {"twod", "both"}},
+                        {"--twod-frame", {"twod", "both"}}};
   for (const Rule& r : rules) {
     const CLI::Option* opt = app.get_option_no_throw(r.option);
     if (opt == nullptr || opt->count() == 0) continue;
@@ -79,6 +80,12 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
   sub.add_option("--resolution", o.resolution,
                  "2D grid of --model twod|both {coarse: 80x32, default: 160x64, fine: 320x128}")
       ->check(one_of({"coarse", "default", "fine"}))
+      ->capture_default_str();
+  sub.add_option("--twod-frame", o.twod_frame,
+                 "2D grid (--model twod|both)'s speed as a fraction of the steady surface speed, "
+                 "in [0, 1]; 0.5 about "
+                 "halves the steps, 0 is the lab frame; output is in the lab frame either way")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
@@ -134,9 +141,11 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
     spec.twod_settings.nx = grid_preset(o.resolution).twod_nx;
     spec.twod_settings.nz = grid_preset(o.resolution).twod_nz;
     spec.twod_settings.viscosity_passes = o.viscosity_passes;
+    spec.twod_settings.frame_fraction = o.twod_frame;
     settings.update({{"frame_speed", o.depthavg.frame_speed},
                      {"resolution", o.resolution},
                      {"viscosity_passes", o.viscosity_passes},
+                     {"twod_frame", o.twod_frame},
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});

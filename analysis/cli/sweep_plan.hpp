@@ -30,6 +30,7 @@ struct SweepOptions {
   double t_end = 0.0;
   std::string resolution = "default";  // 2D grid of --model twod|both (32 cells per h0)
   int viscosity_passes = 1;            // of --model twod|both
+  double twod_frame = 0.5;             // of --model twod|both: TwodSettings::frame_fraction
 };
 
 // Registers the options on `app` (the sweep subcommand).

@@ -54,6 +54,12 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--cfl", o.settings.cfl, "twod: Courant number per direction, in (0, 0.5)")
       ->check(open_range(0.0, 0.5))
       ->capture_default_str();
+  app.add_option("--twod-frame", o.settings.frame_fraction,
+                 "twod: speed of the computational grid as a fraction of the steady surface "
+                 "speed, in [0, 1]; 0.5 about halves the steps, 0 is the lab frame; output is in "
+                 "the lab frame either way")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   app.add_option(
          "--viscosity-passes", o.settings.viscosity_passes,
          "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "

@@ -137,7 +137,8 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
                             const std::atomic<bool>* partner_done) {
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
-  const twod::Grid grid(s.nx, s.nz, c.Lx, s.domain_height(c.h0));
+  twod::Grid grid(s.nx, s.nz, c.Lx, s.domain_height(c.h0));
+  grid.frame_speed = s.frame_fraction * base.u_surface;  // (twod/frame.hpp)
   twod::SolverParams params = twod_solver_params(c, s);
   params.threads = partner_done ? std::max(1, s.threads - 1) : s.threads;
 

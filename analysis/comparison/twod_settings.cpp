@@ -47,7 +47,8 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           {"tolerance", s.tolerance},
           {"viscosity_passes", double(s.viscosity_passes)},
           {"consistent_momentum", s.consistent_momentum ? 1.0 : 0.0},
-          {"chebyshev_N", double(s.chebyshev_N)}};
+          {"chebyshev_N", double(s.chebyshev_N)},
+          {"frame_fraction", s.frame_fraction}};
 }
 
 }  // namespace granbench

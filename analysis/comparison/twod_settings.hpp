@@ -32,6 +32,10 @@ struct TwodSettings {
   // momentum carried by the VOF step's mass fluxes (twod/parameters.hpp)
   bool consistent_momentum = twod::SolverParams{}.consistent_momentum;
   int chebyshev_N = 32;  // resolution of the eigenmode used for seeding
+  // The grid moves downslope at this fraction of the steady surface speed (twod/frame.hpp): at
+  // 0.5 the largest |u| relative to the grid, and so the number of steps, about halves. 0: the
+  // lab frame. The output is in the lab frame either way.
+  double frame_fraction = 0.5;
   // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
   // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.
   int threads = twod::thread_count();

@@ -117,9 +117,9 @@ TEST(FailurePolicy, SampleAndSnapshotCountsAreBounded) {
 TEST(FailurePolicy, AFailureInTheTimeLoopKeepsTheDataAndExitsThree) {
   const TempDir dir("gb_fp_fail");
   write_default_checkpoint(dir / "nan.h5", true);
-  const auto r = run_granbench(
-      kTwod + "--t-end 0.05 --json --restart " + dir / "nan.h5" + " --out " + dir / "x.h5",
-      "fp_fail");
+  const auto r = run_granbench(kTwod + "--twod-frame 0 --t-end 0.05 --json --restart " +
+                                   dir / "nan.h5" + " --out " + dir / "x.h5",
+                               "fp_fail");
   ASSERT_EQ(r.code, 3) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   // A NaN in the velocity fails the viscous solve (an exception, not a DivergenceError).
@@ -133,19 +133,23 @@ TEST(FailurePolicy, ARestartRefusesACheckpointOfOtherPhysics) {
   const TempDir dir("gb_fp_phys");
   write_default_checkpoint(dir / "c.h5", false);
   const std::string restart = kTwod + "--t-end 0.02 --restart " + dir / "c.h5";
+  // The checkpoint's grid is at rest (the lab frame); the default grid moves.
+  const std::string lab = " --twod-frame 0";
   struct Case {
     std::string args, option;
   };
   const Case cases[] = {{"--angle 25", "--angle"},  {"--curve jop --angle 28", "--angle"},
                         {"--curve jop", "--curve"}, {"--mu-s 0.3", "--mu-s"},
-                        {"--h0 0.0041", "--h0"},    {"--Lz 0.009", "--Lz"}};
+                        {"--h0 0.0041", "--h0"},    {"--Lz 0.009", "--Lz"},
+                        {"", "--twod-frame"}};
   for (const auto& c : cases) {
-    const auto r = run_granbench(restart + " " + c.args, "fp_phys");
+    const auto r =
+        run_granbench(restart + " " + c.args + (c.option == "--twod-frame" ? "" : lab), "fp_phys");
     EXPECT_EQ(r.code, 2) << c.args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("granbench: error: " + c.option + ": the checkpoint has", 0), 0u)
         << r.err;
   }
-  const auto same = run_granbench(restart, "fp_phys_same");
+  const auto same = run_granbench(restart + lab, "fp_phys_same");
   EXPECT_EQ(same.code, 0) << same.err;
 }
 

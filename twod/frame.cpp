@@ -26,8 +26,8 @@ std::vector<double> columns_in_lab_frame(const Grid& g, double t, const std::vec
     for (int i = 0; i < g.nx; ++i) out[i] = v[g.wrap((i - n) % g.nx)];
     return out;
   }
-  // Lagrange weights at position 1 - theta on the nodes 0, 1, 2, 3 = columns j-2 .. j+1 with
-  // j = i - n; the value wanted sits between nodes 1 and 2.
+  // Cubic Lagrange weights on the nodes 0, 1, 2, 3 = columns j-2 .. j+1 (j = i - n) at node
+  // position 2 - theta, i.e. p = 1 - theta past node 1, between nodes 1 and 2.
   const double p = 1.0 - theta;
   const double w0 = -p * (p - 1.0) * (p - 2.0) / 6.0, w1 = (p + 1.0) * (p - 1.0) * (p - 2.0) / 2.0,
                w2 = -(p + 1.0) * p * (p - 2.0) / 2.0, w3 = (p + 1.0) * p * (p - 1.0) / 6.0;

@@ -56,6 +56,7 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
       {"max_divergence", st.max_divergence},
       {"dt_min", st.dt_min},
       {"dt_max", st.dt_max},
+      {"frame_speed", solver.grid().frame_speed},  // the grid's; the outputs are in the lab frame
       {"h_mean", h_mean},
       {"flux", twod::mean_flux(solver.grid(), solver.state())},
       {"phase_speed_theory", number_or_null(seeded_speed)},

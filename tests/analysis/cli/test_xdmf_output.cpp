@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -87,6 +88,15 @@ TEST_F(XdmfOutput, StructuredMeshVelocityVectorAndExactTimes) {
   ASSERT_EQ(dims, (std::vector<std::size_t>{17, 41, 2}));
   EXPECT_EQ(xz[2 * 1], xn[1]);
   EXPECT_EQ(xz[2 * 41 + 1], zn[1]);
+  // The run's grid moves (twod/frame.hpp): each snapshot is in the lab frame with its own node
+  // coordinates, offset from the lab's nodes by its x_offset, under half a cell.
+  EXPECT_NE(x.find("run.h5:/snapshots/0001/xz_nodes"), std::string::npos) << x;
+  const auto moved = granbench::h5_read_doubles(h5, "/snapshots/0001/xz_nodes", &dims);
+  ASSERT_EQ(dims, (std::vector<std::size_t>{17, 41, 2}));
+  const double offset = granbench::h5_read_double_attribute(h5, "/snapshots/0001", "x_offset");
+  EXPECT_LE(std::abs(offset), 0.5 * xn[1] * (1.0 + 1e-12));
+  EXPECT_NEAR(moved[2 * 1], xn[1] + offset, 1e-15);
+  EXPECT_EQ(moved[2 * 41 + 1], zn[1]);
 }
 
 TEST_F(XdmfOutput, FileNamesAreEscapedOrRefused) {

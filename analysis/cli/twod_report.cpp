@@ -84,6 +84,8 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
     std::cout << "twod run (" << j["status"].get<std::string>() << "), " << o.flow.curve
               << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, "
               << o.nx << " x " << mo.settings.nz << " cells on " << o.Lx << " x " << r.Lz << " m\n"
+              << "  grid speed       " << j["frame_speed"].get<double>()
+              << " m/s downslope (--twod-frame; every output is in the lab frame)\n"
               << "  t reached        " << j["t_reached"].get<double>() << " s in "
               << j["wall_seconds"].get<double>() << " s wall, " << j["steps"].get<long>()
               << " steps\n"

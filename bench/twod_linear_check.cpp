@@ -16,7 +16,7 @@
 //     rheology=mui|newton nu=<m^2/s> zeta=28.5 h0=0.004 Lx=0.08 Lz=2 (in h0) nx=160 nz=32
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
-//     frame=0 (grid speed / base surface speed)
+//     frame=0 (grid speed / base surface speed) vtol=1e-8 ptol=1e-10 (viscous, projection)
 //     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=0
 //     interface_p=cell|extrapolated
 //     (defaults: the solver's, twod/parameters.hpp)
@@ -147,6 +147,8 @@ int main(int argc, char** argv) {
   params.cfl = a.num("cfl", params.cfl);
   rh.surface_row_shear_spacing = a.num("row_shear", rh.surface_row_shear_spacing ? 1 : 0) != 0;
   params.dt_max = a.num("dt_max", params.dt_max);
+  params.viscous_tolerance = a.num("vtol", params.viscous_tolerance);
+  params.solver_tolerance = a.num("ptol", params.solver_tolerance);
   params.advect_momentum = a.num("advect_momentum", 1) != 0;
   params.viscosity_passes = int(a.num("passes", params.viscosity_passes));
   params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
@@ -303,6 +305,8 @@ int main(int argc, char** argv) {
   out["wall_seconds"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   out["steps"] = st.steps;
+  out["viscous_iterations_per_step"] = double(st.viscous_iterations) / double(st.steps);
+  out["projection_iterations_per_step"] = double(st.projection_iterations) / double(st.steps);
   out["mass_error"] = st.mass_error();
   out["flux_initial"] = flux.front();
   out["flux_final"] = flux.back();

@@ -20,12 +20,7 @@ std::vector<double> columns_in_lab_frame(const Grid& g, double t, const std::vec
   // lab(x_i) = grid(x_i - s): grid column index i - s/dx = i - n - theta, theta in [0, 1)
   const double cells = frame_offset(g, t) / g.dx;
   const int n = static_cast<int>(std::floor(cells));
-  const double theta = cells - n;
-  if (theta == 0.0) {
-    std::vector<double> out(v.size());
-    for (int i = 0; i < g.nx; ++i) out[i] = v[g.wrap((i - n) % g.nx)];
-    return out;
-  }
+  const double theta = cells - n;  // at theta = 0 the weights are (0, 0, 1, 0): a permutation
   // Cubic Lagrange weights on the nodes 0, 1, 2, 3 = columns j-2 .. j+1 (j = i - n) at node
   // position 2 - theta, i.e. p = 1 - theta past node 1, between nodes 1 and 2.
   const double p = 1.0 - theta;

@@ -35,6 +35,12 @@ struct Properties {
   // The strain rates eta was evaluated from: D_xx, D_zz at cell centres and the shear rate
   // du/dz + dw/dx at corners (stored, not rebuilt per step: see PcgWorkspace for why).
   std::vector<double> D_xx_c, D_zz_c, gamma_n;
+  // The surface per column, for the interface pressure (Rheology::interface_pressure): the
+  // column heights, and per cell (c) or corner (n) the nearest empty row at or above it and the
+  // nearest full row at or below it (properties.cpp). Kept, like the above, so that a step
+  // allocates nothing.
+  std::vector<double> column_height;
+  std::vector<int> empty_above_c, full_below_c, empty_above_n, full_below_n;
 
   explicit Properties(const Grid& g = Grid())
       : rho_u(g.cells()),

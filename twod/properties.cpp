@@ -149,8 +149,9 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // Interface pressure (Rheology::interface_pressure): column heights and, per column, the
   // highest full cell below the surface.
   const bool extrapolate = model.rheology().interface_pressure == InterfacePressure::Extrapolated;
-  std::vector<double> hcol(nx, 0.0);
+  std::vector<double>& hcol = props.column_height;
   if (extrapolate) {
+    hcol.assign(nx, 0.0);
 #pragma omp parallel for schedule(static)  // columns; each sums over k in the serial order
     for (int i = 0; i < nx; ++i)
       for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
@@ -159,7 +160,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // above k that is empty (nz if none) and the nearest at or below k that is full (-1 if none),
   // so that p_granular finds its rows without scanning: light-fluid cells holding wisps of
   // grains far above the surface scanned down through the whole layer, 9 % of a step.
-  std::vector<int> empty_above_c, full_below_c, empty_above_n, full_below_n;
+  std::vector<int>&empty_above_c = props.empty_above_c, &full_below_c = props.full_below_c,
+  &empty_above_n = props.empty_above_n, &full_below_n = props.full_below_n;
   if (extrapolate) {
     for (auto* v : {&empty_above_c, &full_below_c, &empty_above_n, &full_below_n})
       v->resize(std::size_t(nx) * nz);

@@ -111,7 +111,7 @@ double Solver::step(double dt_limit) {
   const bool consistent =
       params_.consistent_momentum && params_.advect_momentum && params_.advect_interface;
   if (params_.advect_interface)
-    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_,
+    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_, vof_work_,
                            consistent ? &grain_fluxes_ : nullptr);
   // the consistent operator needs the level-n face densities, which step 2 replaces
   if (consistent) {
@@ -126,13 +126,13 @@ double Solver::step(double dt_limit) {
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
   //    (surface_row_pressure.cpp)
   update_densities(g_, s_.f, params_.rheology, props_);
-  if (params_.hydrostatic_viscosity_pressure)
-    update_viscosity(g_, s_, viscosity_pressure(g_, params_, s_.p, h_before_, h_after_), model_,
-                     props_);
-  else
+  if (params_.hydrostatic_viscosity_pressure) {
+    viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, p_eta_);
+    update_viscosity(g_, s_, p_eta_, model_, props_);
+  } else
     update_viscosity(g_, s_, model_, props_);
   if (params_.surface_row_pressure)
-    force_u_ = surface_row_pressure_correction(g_, params_, s_.f);
+    surface_row_pressure_correction(g_, params_, s_.f, force_u_);
   else
     force_u_.clear();
   // 3. momentum predictor

@@ -86,6 +86,7 @@ class Solver {
   ViscousStep viscous_;
   Projection projection_;
   VofStats vof_;
+  VofWorkspace vof_work_;
   Fields old_;  // u^n, p^n kept for the Picard passes (viscosity_passes > 1)
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
   GrainFluxes grain_fluxes_;                     // the VOF step's fluxes (consistent_momentum)
@@ -93,8 +94,9 @@ class Solver {
   std::vector<double> adv_cons_u_, adv_cons_w_;  // the consistent operator at level n
   std::vector<double> adv_u_old_, adv_w_old_;    // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_, h_after_;       // column heights before and after the VOF step
-  std::vector<double> force_u_;                  // surface-row pressure correction per u-face
-  double dt_previous_ = 0.0;                     // the last step taken (shortened or not)
+  std::vector<double> p_eta_;    // the pressure eta is evaluated at (viscosity_pressure.hpp)
+  std::vector<double> force_u_;  // surface-row pressure correction per u-face
+  double dt_previous_ = 0.0;     // the last step taken (shortened or not)
   RunStatistics stats_;
 };
 

@@ -59,27 +59,24 @@
 
 namespace granbench::twod {
 
-std::vector<double> surface_row_pressure_correction(const Grid& g, const SolverParams& params,
-                                                    const std::vector<double>& f) {
+void surface_row_pressure_correction(const Grid& g, const SolverParams& params,
+                                     const std::vector<double>& f,
+                                     std::vector<double>& correction) {
   const double g_cos = params.rheology.material.g * std::cos(params.zeta);
   const double drho = params.rheology.material.bulk_density() - params.rheology.rho_light;
-  // m = s f (1 - f): the grains' first moment about the cell centre, in units of -dz/2
-  std::vector<double> m(g.cells());
+  // m = s f (1 - f): the grains' first moment about the cell centre, in units of -dz/2 (a few
+  // flops: evaluated for both cells of each face rather than stored)
+  auto m = [&](int i, int k) {
+    const double fc = f[g.at(i, k)];
+    const double below = k > 0 ? f[g.at(i, k - 1)] : 1.0;         // the bed counts as full
+    const double above = k + 1 < g.nz ? f[g.at(i, k + 1)] : 0.0;  // the open top as empty
+    return std::clamp(below - above, -1.0, 1.0) * fc * (1.0 - fc);
+  };
+  const double scale = drho * g_cos * 0.5 * g.dz * g.dz;
+  correction.resize(g.cells());
 #pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
   for (int k = 0; k < g.nz; ++k)
-    for (int i = 0; i < g.nx; ++i) {
-      const double fc = f[g.at(i, k)];
-      const double below = k > 0 ? f[g.at(i, k - 1)] : 1.0;         // the bed counts as full
-      const double above = k + 1 < g.nz ? f[g.at(i, k + 1)] : 0.0;  // the open top as empty
-      m[g.at(i, k)] = std::clamp(below - above, -1.0, 1.0) * fc * (1.0 - fc);
-    }
-  const double scale = drho * g_cos * 0.5 * g.dz * g.dz;
-  std::vector<double> correction(g.cells());
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < g.nz; ++k)
-    for (int i = 0; i < g.nx; ++i)
-      correction[g.at(i, k)] = scale * (m[g.at(i, k)] - m[g.at(i - 1, k)]);
-  return correction;
+    for (int i = 0; i < g.nx; ++i) correction[g.at(i, k)] = scale * (m(i, k) - m(i - 1, k));
 }
 
 }  // namespace granbench::twod

@@ -23,23 +23,22 @@
 
 namespace granbench::twod {
 
-std::vector<double> viscosity_pressure(const Grid& g, const SolverParams& params,
-                                       const std::vector<double>& p,
-                                       const std::vector<double>& h_before,
-                                       const std::vector<double>& h_after) {
+void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
+                        const std::vector<double>& h_before, const std::vector<double>& h_after,
+                        std::vector<double>& p_eta) {
   const double g_cos = params.rheology.material.g * std::cos(params.zeta);
   const double rho_g = params.rheology.material.bulk_density(), rho_l = params.rheology.rho_light;
   auto hydrostatic = [&](double h, double z) {
     return rho_g * g_cos * std::max(h - z, 0.0) + rho_l * g_cos * (g.Lz - std::max(h, z));
   };
-  std::vector<double> p_eta(p);
+  p_eta.resize(p.size());
 #pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
   for (int k = 0; k < g.nz; ++k) {
     const double z = g.zc(k);
     for (int i = 0; i < g.nx; ++i)
-      p_eta[g.at(i, k)] += hydrostatic(h_after[i], z) - hydrostatic(h_before[i], z);
+      p_eta[g.at(i, k)] =
+          p[g.at(i, k)] + (hydrostatic(h_after[i], z) - hydrostatic(h_before[i], z));
   }
-  return p_eta;
 }
 
 }  // namespace granbench::twod

@@ -10,9 +10,9 @@ namespace granbench::twod {
 
 // p^n plus the change of the hydrostatic pressure between the column heights h^n and h^{n+1}
 // (the surface before and after this step's VOF advection).
-std::vector<double> viscosity_pressure(const Grid& g, const SolverParams& params,
-                                       const std::vector<double>& p,
-                                       const std::vector<double>& h_before,
-                                       const std::vector<double>& h_after);
+// Writes p_eta (resized to the cells).
+void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
+                        const std::vector<double>& h_before, const std::vector<double>& h_after,
+                        std::vector<double>& p_eta);
 
 }  // namespace granbench::twod

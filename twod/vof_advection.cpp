@@ -52,7 +52,7 @@ double donor_flux(const Grid& g, const std::vector<double>& f, int i, int k, int
 
 void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double>& w, double dt,
            int dir, const std::vector<char>& c, std::vector<double>& f, std::vector<double>& flux,
-           VofStats& stats) {
+           std::vector<double>& clipped_rows, VofStats& stats) {
   const int nx = g.nx, nz = g.nz;
   if (dir == 0) {
     const double r = dt / g.dx;
@@ -100,7 +100,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   }
   // Clip to [0, 1]; the clipped volume is summed per row, then over the rows in order, so that
   // it does not depend on the thread count.
-  std::vector<double> clipped_rows(nz, 0.0);
+  clipped_rows.assign(nz, 0.0);
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
@@ -127,13 +127,15 @@ void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, do
 
 void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
                             const std::vector<double>& w, double dt, bool x_first,
-                            std::vector<double>& f, VofStats& stats, GrainFluxes* fluxes) {
-  std::vector<char> c(f.size());
+                            std::vector<double>& f, VofStats& stats, VofWorkspace& work,
+                            GrainFluxes* fluxes) {
+  std::vector<char>& c = work.c;
+  c.resize(f.size());
   for (std::size_t n = 0; n < f.size(); ++n) c[n] = f[n] > 0.5 ? 1 : 0;  // Weymouth-Yue c_i
-  std::vector<double> flux;
+  std::vector<double>& flux = work.flux;
   const int first = x_first ? 0 : 1;
   for (const int dir : {first, 1 - first}) {
-    sweep(g, u, w, dt, dir, c, f, flux, stats);
+    sweep(g, u, w, dt, dir, c, f, flux, work.clipped_rows, stats);
     if (fluxes) (dir == 0 ? fluxes->x : fluxes->z).swap(flux);  // (flux is rewritten in full)
   }
 }

@@ -17,13 +17,21 @@ struct GrainFluxes {
   std::vector<double> x, z;
 };
 
+// The step's scratch arrays, kept by the caller from step to step so that a step allocates
+// nothing (see PcgWorkspace for why).
+struct VofWorkspace {
+  std::vector<char> c;  // the Weymouth-Yue indicator of the step's start
+  std::vector<double> flux, clipped_rows;
+};
+
 // One time step of directionally split PLIC advection with the Weymouth-Yue correction;
 // `x_first` alternates the sweep order from step to step. u, w are the (discretely
 // divergence-free) face velocities of the step. When `fluxes` is given, it receives the step's
 // face fluxes (for momentum carried consistently with f).
 void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
                             const std::vector<double>& w, double dt, bool x_first,
-                            std::vector<double>& f, VofStats& stats, GrainFluxes* fluxes = nullptr);
+                            std::vector<double>& f, VofStats& stats, VofWorkspace& work,
+                            GrainFluxes* fluxes = nullptr);
 
 // Youngs normal (pointing out of the fluid) of cell (i, k) in cell-unit coordinates.
 void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, double& m1,

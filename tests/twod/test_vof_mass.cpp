@@ -49,7 +49,8 @@ TEST(VofMass, ConservedToRoundOffOver1000Steps) {
   for (double v : w) wmax = std::max(wmax, std::abs(v));
   const double dt = 0.4 * std::min(g.dx / umax, g.dz / wmax);
   VofStats stats;
-  for (int n = 0; n < 1000; ++n) advect_volume_fraction(g, u, w, dt, n % 2 == 0, f, stats);
+  VofWorkspace work;
+  for (int n = 0; n < 1000; ++n) advect_volume_fraction(g, u, w, dt, n % 2 == 0, f, stats, work);
   const double V = granular_volume(g, f);
   std::printf("VOF volume after 1000 steps: relative change %.3e, clipped %.3e\n", (V - V0) / V0,
               stats.clipped_volume * g.cell_volume() / V0);
@@ -75,7 +76,8 @@ TEST(VofMass, TranslationReturnsAfterOnePeriod) {
   const int steps = 200;  // Courant number Lx/(steps dx) = 0.32
   const double dt = g.Lx / U0 / steps;
   VofStats stats;
-  for (int n = 0; n < steps; ++n) advect_volume_fraction(g, u, w, dt, n % 2 == 0, f, stats);
+  VofWorkspace work;
+  for (int n = 0; n < steps; ++n) advect_volume_fraction(g, u, w, dt, n % 2 == 0, f, stats, work);
   double l1 = 0;
   for (std::size_t n = 0; n < f.size(); ++n) l1 += std::abs(f[n] - f0[n]) * g.cell_volume();
   // The shape error of PLIC translation is a fraction of the interface length times dx.

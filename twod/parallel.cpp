@@ -26,6 +26,15 @@ void set_thread_count(int n) {
 #endif
 }
 
+void parallel_for(int n, bool parallel, IndexBody body) {
+  if (parallel && n > 1 && thread_count() > 1) {
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) body(i);
+  } else {
+    for (int i = 0; i < n; ++i) body(i);
+  }
+}
+
 namespace {
 
 // sum over the blocks b of block_sum(lo_b, hi_b), added in block order; blocks in parallel.
@@ -39,11 +48,10 @@ double blocked_sum(Eigen::Index n, BlockSum&& block_sum) {
     large.resize(nb);
     parts = large.data();
   }
-#pragma omp parallel for schedule(static) if (nb > 1)
-  for (Eigen::Index b = 0; b < nb; ++b) {
+  parallel_for(int(nb), true, [&](int b) {
     const Eigen::Index lo = b * kBlock;
     parts[b] = block_sum(lo, std::min(n, lo + kBlock) - lo);
-  }
+  });
   double sum = 0.0;
   for (Eigen::Index b = 0; b < nb; ++b) sum += parts[b];
   return sum;
@@ -72,11 +80,10 @@ namespace {
 template <class Block>
 void for_blocks(Eigen::Index n, Block&& block) {
   const Eigen::Index nb = (n + kBlock - 1) / kBlock;
-#pragma omp parallel for schedule(static) if (nb > 1)
-  for (Eigen::Index b = 0; b < nb; ++b) {
+  parallel_for(int(nb), true, [&](int b) {
     const Eigen::Index lo = b * kBlock;
     block(lo, std::min(n, lo + kBlock) - lo);
-  }
+  });
 }
 
 }  // namespace

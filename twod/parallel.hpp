@@ -18,6 +18,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <type_traits>
 
 namespace granbench::twod {
 
@@ -25,6 +26,28 @@ namespace granbench::twod {
 int thread_count();
 // Set it for the calling thread (n >= 1).
 void set_thread_count(int n);
+
+// A non-owning reference to a callable body(int), the body of parallel_for (a plain function
+// call, so that the pragma stays in parallel.cpp; see above).
+class IndexBody {
+ public:
+  template <class F>
+  IndexBody(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
+      : object_(const_cast<void*>(static_cast<const void*>(&f))),
+        call_([](void* o, int i) { (*static_cast<std::remove_reference_t<F>*>(o))(i); }) {}
+  void operator()(int i) const { call_(object_, i); }
+
+ private:
+  void* object_;
+  void (*call_)(void*, int);
+};
+
+// body(i) for i in [0, n), on the threads (static schedule) when `parallel` is true and more
+// than one thread is set; otherwise a plain loop that does not enter OpenMP at all. (libgomp
+// ends every parallel region, even a one-thread team or one with a false `if` clause, at a
+// barrier that makes a futex system call: the ~480 regions of a 256 x 64 rollwave step, most of
+// them on the multigrid's coarse levels, cost 6 % of a one-thread run in the kernel.)
+void parallel_for(int n, bool parallel, IndexBody body);
 
 // Fixed block length of the deterministic sums (entries): the 16 k - 32 k unknowns of a
 // 256 x 64 grid give each of a few threads several blocks, and the serial combination of the

@@ -29,8 +29,7 @@ constexpr int kParallelCells = 2048;
 
 void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   y.resize(nx * nz);
-#pragma omp parallel for schedule(static) if (nx * nz >= kParallelCells)
-  for (int i = 0; i < nx; ++i) {
+  parallel_for(nx, nx * nz >= kParallelCells, [&](int i) {
     const int il = i == 0 ? nx - 1 : i - 1, ir = i == nx - 1 ? 0 : i + 1;
     const double* cl = &cx[cell(i, 0)];
     const double* cr = &cx[cell(ir, 0)];
@@ -43,14 +42,13 @@ void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
       yi[k] = cl[k] * (xi[k] - xl[k]) + cr[k] * (xi[k] - xr[k]) + (czi[k] + czi[k + 1]) * xi[k];
     for (int k = 1; k < nz; ++k) yi[k] -= czi[k] * xi[k - 1];  // bed face has czi[0] = 0
     for (int k = 0; k < nz - 1; ++k) yi[k] -= czi[k + 1] * xi[k + 1];
-  }
+  });
 }
 
 void PoissonLevel::factorise() {
   cp.resize(nx * nz);
   inv_m.resize(nx * nz);
-#pragma omp parallel for schedule(static) if (nx * nz >= kParallelCells)
-  for (int i = 0; i < nx; ++i) {
+  parallel_for(nx, nx * nz >= kParallelCells, [&](int i) {
     const int ir = i == nx - 1 ? 0 : i + 1;
     for (int k = 0; k < nz; ++k) {
       const int c = cell(i, k);
@@ -60,7 +58,7 @@ void PoissonLevel::factorise() {
       inv_m[c] = 1.0 / (diag - (k > 0 ? lower * cp[c - 1] : 0.0));
       cp[c] = upper * inv_m[c];
     }
-  }
+  });
 }
 
 void PressureMultigrid::set_operator(const PoissonLevel& fine) {
@@ -85,13 +83,12 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
-#pragma omp parallel for schedule(static) if (F.nx * F.nz >= kParallelCells)
-    for (int i = 0; i < C.nx; ++i) {
+    parallel_for(C.nx, F.nx * F.nz >= kParallelCells, [&](int i) {
       for (int k = 0; k < C.nz; ++k)
         C.cx[C.cell(i, k)] = 0.5 * (F.cx[F.cell(2 * i, 2 * k)] + F.cx[F.cell(2 * i, 2 * k + 1)]);
       for (int k = 0; k <= C.nz; ++k)
         C.cz[C.zface(i, k)] = 0.5 * (F.cz[F.zface(2 * i, 2 * k)] + F.cz[F.zface(2 * i + 1, 2 * k)]);
-    }
+    });
   }
   for (PoissonLevel& L : levels_) L.factorise();  // (parallel inside)
   const PoissonLevel& B = levels_.back();
@@ -165,11 +162,10 @@ void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd&
     const int free = last_alone ? count - 1 : count;                 // columns first + 2m, m < free
     const int quads = free / 4;
     if (last_alone && !ascending) solve_columns<1>(L, b, x, {nx - 1});
-#pragma omp parallel for schedule(static) if (parallel)
-    for (int m = 0; m < quads; ++m) {
+    parallel_for(quads, parallel, [&](int m) {
       const int c = first + 8 * m;
       solve_columns<4>(L, b, x, {c, c + 2, c + 4, c + 6});
-    }
+    });
     for (int m = 4 * quads; m < free; ++m) solve_columns<1>(L, b, x, {first + 2 * m});
     if (last_alone && ascending) solve_columns<1>(L, b, x, {nx - 1});
   };
@@ -204,8 +200,7 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   Eigen::VectorXd& rc = rhs_c_[l + 1];
   rc.resize(C.nx * C.nz);  // written below: the first fine column assigns, the second adds
   const Eigen::VectorXd& Ax = res_[l];
-#pragma omp parallel for schedule(static) if (parallel)
-  for (int ic = 0; ic < C.nx; ++ic)              // R = P^T: sum of the 2 x 2 fine residuals b - A x
+  parallel_for(C.nx, parallel, [&](int ic) {     // R = P^T: sum of the 2 x 2 fine residuals b - A x
     for (int i = 2 * ic; i < 2 * ic + 2; ++i) {  // fine columns in order, as serially
       const double* bi = &b[L.cell(i, 0)];
       const double* ai = &Ax[L.cell(i, 0)];
@@ -215,14 +210,14 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
         rci[k / 2] = i == 2 * ic ? pair : rci[k / 2] + pair;
       }
     }
+  });
   Eigen::VectorXd& xc = x_c_[l + 1];
   vcycle(l + 1, rc, xc);
-#pragma omp parallel for schedule(static) if (parallel)
-  for (int i = 0; i < L.nx; ++i) {  // P: piecewise constant
+  parallel_for(L.nx, parallel, [&](int i) {  // P: piecewise constant
     double* xi = &x[L.cell(i, 0)];
     const double* xci = &xc[C.cell(i / 2, 0)];
     for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
-  }
+  });
   line_sweep(L, b, x, false);
 }
 

@@ -245,8 +245,7 @@ void sweep_colour(int nx, int colour, bool forward, SolveLine&& solve_line) {
   const bool last_alone = blocks % 2 == 1 && colour == 0;
   const int end = last_alone ? blocks - 1 : blocks;
   if (last_alone && !forward) sweep_block(blocks - 1);
-#pragma omp parallel for schedule(static)
-  for (int b = colour; b < end; b += 2) sweep_block(b);
+  parallel_for((end - colour + 1) / 2, true, [&](int m) { sweep_block(colour + 2 * m); });
   if (last_alone && forward) sweep_block(blocks - 1);
 }
 

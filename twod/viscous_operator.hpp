@@ -52,10 +52,14 @@ class ViscousOperator {
   // each(row, entries) for every row in index order; entries(visit) visits that row.
   template <class Each>
   void for_each_row(Each&& each) const;
-  // One line of length `length` from row `first`; visit_row_m(m, visit) visits its m-th row.
-  template <class RowVisit>
-  void solve_line(int first, int length, const Eigen::VectorXd& r, Eigen::VectorXd& z,
-                  RowVisit&& visit_row_m) const;
+  // The line of length `length` from row `first`, in place: z holds its right-hand side.
+  void solve_line(int first, int length, Eigen::VectorXd& z) const;
+  // Column i's u-line (w-line) right-hand side r minus its couplings outside the line, into z.
+  void u_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  void w_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  // y's rows of column i's u's (w's): the product A x (each row written once)
+  void apply_u_column(int i, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  void apply_w_column(int i, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   void solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   void solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 

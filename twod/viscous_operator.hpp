@@ -52,16 +52,22 @@ class ViscousOperator {
   // each(row, entries) for every row in index order; entries(visit) visits that row.
   template <class Each>
   void for_each_row(Each&& each) const;
-  // The line of length `length` from row `first`, in place: z holds its right-hand side.
-  void solve_line(int first, int length, Eigen::VectorXd& z) const;
+  // The n lines of length `length` from the rows `first`, in place: z holds their right-hand
+  // sides.
+  template <int n>
+  void solve_lines(const int (&first)[n], int length, Eigen::VectorXd& z) const;
+  // The u-lines (or w-lines) of the n <= 4 independent columns: right-hand sides, then solves.
+  void solve_column_lines(bool u_lines, const int* columns, int n, const Eigen::VectorXd& r,
+                          Eigen::VectorXd& z) const;
+  // One colour of blocks of one sweep of the preconditioner (see the .cpp).
+  void sweep_colour(int colour, bool forward, bool u_lines, const Eigen::VectorXd& r,
+                    Eigen::VectorXd& z) const;
   // Column i's u-line (w-line) right-hand side r minus its couplings outside the line, into z.
   void u_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   void w_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
   // y's rows of column i's u's (w's): the product A x (each row written once)
   void apply_u_column(int i, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   void apply_w_column(int i, const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
-  void solve_u_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
-  void solve_w_line(int i, const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
 
   Grid g_;
   int nu_;

@@ -32,7 +32,8 @@ void set_thread_count(int n);
 class IndexBody {
  public:
   template <class F>
-  IndexBody(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
+  requires(!std::is_same_v<std::remove_cvref_t<F>, IndexBody>)  // copies stay copies
+      IndexBody(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
       : object_(const_cast<void*>(static_cast<const void*>(&f))),
         call_([](void* o, int i) { (*static_cast<std::remove_reference_t<F>*>(o))(i); }) {}
   void operator()(int i) const { call_(object_, i); }

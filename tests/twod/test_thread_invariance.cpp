@@ -13,6 +13,7 @@
 // is at rest.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -91,4 +92,21 @@ TEST(ThreadInvariance, EvenGridOneAndTwoThreadsBitwiseIdentical) {
 
 TEST(ThreadInvariance, OddGridOneAndTwoThreadsBitwiseIdentical) {
   expect_identical(65, 32, 0.0);
+}
+
+// parallel_for (parallel.hpp) visits every index exactly once, on one thread or two, threaded or
+// not, and for the empty and one-entry ranges.
+TEST(ParallelFor, VisitsEveryIndexOnceForAnyThreadCount) {
+  const int saved = thread_count();
+  for (int threads : {1, 2})
+    for (bool parallel : {false, true})
+      for (int n : {0, 1, 7, 1000}) {
+        SCOPED_TRACE(testing::Message()
+                     << threads << " threads, parallel " << parallel << ", n " << n);
+        set_thread_count(threads);
+        std::vector<int> visits(n, 0);
+        parallel_for(n, parallel, [&](int i) { ++visits[i]; });
+        EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), n);
+      }
+  set_thread_count(saved);
 }

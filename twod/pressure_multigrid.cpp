@@ -19,6 +19,8 @@
 // cells stay on one thread (too little work to share).
 #include "twod/pressure_multigrid.hpp"
 
+#include <type_traits>
+
 #include "twod/parallel.hpp"
 
 namespace granbench::twod {
@@ -62,7 +64,19 @@ void PoissonLevel::factorise() {
 }
 
 void PressureMultigrid::set_operator(const PoissonLevel& fine) {
-  if (levels_.empty() || levels_.front().nx != fine.nx || levels_.front().nz != fine.nz) {
+  PoissonLevel& F = fine_operator(fine.nx, fine.nz);
+  F.cx = fine.cx;
+  F.cz = fine.cz;
+  rebuild();
+}
+
+PoissonLevel& PressureMultigrid::fine_operator(int nx, int nz) {
+  if (levels_.empty() || levels_.front().nx != nx || levels_.front().nz != nz) {
+    PoissonLevel fine;
+    fine.nx = nx;
+    fine.nz = nz;
+    fine.cx.assign(std::size_t(nx) * nz, 0.0);
+    fine.cz.assign(std::size_t(nx) * (nz + 1), 0.0);
     levels_.assign(1, fine);
     while (true) {
       const PoissonLevel& L = levels_.back();
@@ -74,12 +88,13 @@ void PressureMultigrid::set_operator(const PoissonLevel& fine) {
       C.cz.assign(C.nx * (C.nz + 1), 0.0);
       levels_.push_back(C);
     }
-    res_.resize(levels_.size());
     rhs_c_.resize(levels_.size());
     x_c_.resize(levels_.size());
-  } else {
-    levels_.front() = fine;
   }
+  return levels_.front();
+}
+
+void PressureMultigrid::rebuild() {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
@@ -112,7 +127,9 @@ namespace {
 // -cz_k x_{k-1} + diag_k x_k - cz_{k+1} x_{k+1} = b_k + cx_left x_left + cx_right x_right,
 // with the factors of PoissonLevel::factorise(). Independent recurrences in one loop keep the
 // floating-point pipeline busy; each column's arithmetic is the same as when solved alone.
-template <int n>
+// With zero_neighbours the x-neighbours are taken as 0 without being read (the first colour of
+// the first sweep from x = 0).
+template <int n, bool zero_neighbours = false>
 void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                    const int (&cols)[n]) {
   const int nx = L.nx, nz = L.nz;
@@ -135,7 +152,8 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
   double d[n] = {};
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < n; ++j) {
-      const double rhs = bi[j][k] + cl[j][k] * xl[j][k] + cr[j][k] * xr[j][k];
+      const double rhs =
+          zero_neighbours ? bi[j][k] : bi[j][k] + cl[j][k] * xl[j][k] + cr[j][k] * xr[j][k];
       d[j] = (rhs + cz[j][k] * d[j]) * inv_m[j][k];  // lower = -cz[k]; d = 0 for k = 0
       xi[j][k] = d[j];
     }
@@ -146,7 +164,7 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
 }  // namespace
 
 void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b,
-                                   Eigen::VectorXd& x, bool forward) const {
+                                   Eigen::VectorXd& x, bool forward, bool from_zero) const {
   // Zebra order: even columns, then odd ones (forward); the exact reverse backward. Columns of
   // one colour are not neighbours, except the first and the last when nx is odd (periodic): the
   // last column of an odd nx is then solved alone, after the others of its colour (forward) or
@@ -156,7 +174,8 @@ void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd&
   // on one thread ran 2-3 % faster than with pairs).
   const int nx = L.nx;
   const bool parallel = nx * L.nz >= kParallelCells;
-  auto sweep_colour = [&](int first, bool ascending) {
+  auto sweep_colour = [&](int first, bool ascending, auto zero_neighbours) {
+    constexpr bool zero = decltype(zero_neighbours)::value;
     const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
     const bool last_alone = nx % 2 == 1 && first == 0 && count > 1;  // column nx - 1
     const int free = last_alone ? count - 1 : count;                 // columns first + 2m, m < free
@@ -164,17 +183,20 @@ void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd&
     if (last_alone && !ascending) solve_columns<1>(L, b, x, {nx - 1});
     parallel_for(quads, parallel, [&](int m) {
       const int c = first + 8 * m;
-      solve_columns<4>(L, b, x, {c, c + 2, c + 4, c + 6});
+      solve_columns<4, zero>(L, b, x, {c, c + 2, c + 4, c + 6});
     });
-    for (int m = 4 * quads; m < free; ++m) solve_columns<1>(L, b, x, {first + 2 * m});
+    for (int m = 4 * quads; m < free; ++m) solve_columns<1, zero>(L, b, x, {first + 2 * m});
     if (last_alone && ascending) solve_columns<1>(L, b, x, {nx - 1});
   };
-  if (forward) {
-    sweep_colour(0, true);
-    sweep_colour(1, true);
+  if (forward && from_zero) {  // x = 0 on entry: the even columns see zero neighbours
+    sweep_colour(0, true, std::true_type{});
+    sweep_colour(1, true, std::false_type{});
+  } else if (forward) {
+    sweep_colour(0, true, std::false_type{});
+    sweep_colour(1, true, std::false_type{});
   } else {
-    sweep_colour(1, false);
-    sweep_colour(0, false);
+    sweep_colour(1, false, std::false_type{});
+    sweep_colour(0, false, std::false_type{});
   }
 }
 
@@ -186,29 +208,36 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
     } else {
       x.setZero(L.nx * L.nz);
       for (int sweep = 0; sweep < 20; ++sweep) {
-        line_sweep(L, b, x, true);
-        line_sweep(L, b, x, false);
+        line_sweep(L, b, x, true, false);
+        line_sweep(L, b, x, false, false);
       }
     }
     return;
   }
-  parallel_zero(L.nx * L.nz, x);
-  line_sweep(L, b, x, true);
-  L.apply(x, res_[l]);
   const bool parallel = L.nx * L.nz >= kParallelCells;
   const PoissonLevel& C = levels_[l + 1];
   Eigen::VectorXd& rc = rhs_c_[l + 1];
-  rc.resize(C.nx * C.nz);  // written below: the first fine column assigns, the second adds
-  const Eigen::VectorXd& Ax = res_[l];
-  parallel_for(C.nx, parallel, [&](int ic) {     // R = P^T: sum of the 2 x 2 fine residuals b - A x
-    for (int i = 2 * ic; i < 2 * ic + 2; ++i) {  // fine columns in order, as serially
-      const double* bi = &b[L.cell(i, 0)];
-      const double* ai = &Ax[L.cell(i, 0)];
-      double* rci = &rc[C.cell(ic, 0)];
-      for (int k = 0; k < L.nz; k += 2) {
-        const double pair = (bi[k] - ai[k]) + (bi[k + 1] - ai[k + 1]);
-        rci[k / 2] = i == 2 * ic ? pair : rci[k / 2] + pair;
-      }
+  rc.resize(C.nx * C.nz);
+  // Pre-smoothing from x = 0 (no need to zero x: every column is solved). A level that has a
+  // coarser one has an even nx (set_operator), so the columns alternate in colour all round.
+  // After the sweep the odd columns' residual is zero (each was just solved exactly with its
+  // neighbours' final values) and an even column's is what its neighbours added after it was
+  // solved with them at zero:
+  //   r_i = b_i - (A x)_i = cx_left x_{i-1} + cx_right x_{i+1}   (i even).
+  // R = P^T sums the 2 x 2 fine residuals of a coarse cell, of which only the even column's pair
+  // is non-zero; this replaces the residual's full product and its second pass.
+  x.resize(L.nx * L.nz);
+  line_sweep(L, b, x, true, true);
+  parallel_for(C.nx, parallel, [&](int ic) {
+    const int i = 2 * ic, il = i == 0 ? L.nx - 1 : i - 1, ir = i + 1;
+    const double* cl = &L.cx[L.cell(i, 0)];
+    const double* cr = &L.cx[L.cell(ir, 0)];
+    const double* xl = &x[L.cell(il, 0)];
+    const double* xr = &x[L.cell(ir, 0)];
+    double* rci = &rc[C.cell(ic, 0)];
+    for (int kc = 0; kc < C.nz; ++kc) {
+      const int k = 2 * kc;
+      rci[kc] = (cl[k] * xl[k] + cr[k] * xr[k]) + (cl[k + 1] * xl[k + 1] + cr[k + 1] * xr[k + 1]);
     }
   });
   Eigen::VectorXd& xc = x_c_[l + 1];
@@ -218,7 +247,7 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
     const double* xci = &xc[C.cell(i / 2, 0)];
     for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
   });
-  line_sweep(L, b, x, false);
+  line_sweep(L, b, x, false, false);
 }
 
 void PressureMultigrid::precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z) {

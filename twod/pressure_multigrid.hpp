@@ -25,6 +25,10 @@ class PressureMultigrid {
  public:
   // Set the finest operator; coarse levels are rebuilt from it.
   void set_operator(const PoissonLevel& fine);
+  // The same without a copy: fill the coefficients of fine_operator(nx, nz) (the finest level,
+  // sized and kept from one call to the next), then call rebuild().
+  PoissonLevel& fine_operator(int nx, int nz);
+  void rebuild();
   const PoissonLevel& fine() const { return levels_.front(); }
   // z = M^{-1} r: one symmetric V(1,1)-cycle from z = 0.
   void precondition(const Eigen::VectorXd& r, Eigen::VectorXd& z);
@@ -32,11 +36,11 @@ class PressureMultigrid {
 
  private:
   void vcycle(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd& x);
-  void line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                  bool forward) const;
+  void line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x, bool forward,
+                  bool from_zero) const;
 
   std::vector<PoissonLevel> levels_;
-  std::vector<Eigen::VectorXd> res_, rhs_c_, x_c_;
+  std::vector<Eigen::VectorXd> rhs_c_, x_c_;
   Eigen::LDLT<Eigen::MatrixXd> coarsest_;
   bool direct_coarsest_ = true;
 };

@@ -29,10 +29,6 @@ Projection::Projection(const Grid& g, const SolverParams& params)
       kind_(params.pressure_solver),
       tol_(params.solver_tolerance),
       solver_(params.pressure_solver, params.solver_tolerance) {
-  op_.nx = g.nx;
-  op_.nz = g.nz;
-  op_.cx.assign(g.cells(), 0.0);
-  op_.cz.assign(g.w_faces(), 0.0);
   std::vector<std::vector<int>> lines;  // columns, for the line-relaxation option
   for (int i = 0; i < g.nx; ++i) {
     std::vector<int> line;
@@ -58,16 +54,17 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
     for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {
+    PoissonLevel& op = multigrid_.fine_operator(nx, nz);  // filled in place, no copy
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nx; ++i) {
-      for (int k = 0; k < nz; ++k) op_.cx[op_.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
-      op_.cz[op_.zface(i, 0)] = 0.0;  // bed: no flux
-      for (int k = 1; k < nz; ++k) op_.cz[op_.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
-      op_.cz[op_.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
+      for (int k = 0; k < nz; ++k) op.cx[op.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
+      op.cz[op.zface(i, 0)] = 0.0;  // bed: no flux
+      for (int k = 1; k < nz; ++k) op.cz[op.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
+      op.cz[op.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
     }
-    multigrid_.set_operator(op_);
+    multigrid_.rebuild();
     iterations =
-        pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op_.apply(v, y); },
+        pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op.apply(v, y); },
             [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { multigrid_.precondition(r, z); },
             b_, x_, tol_, 500, work_);
     if (iterations < 0) throw std::runtime_error("pressure multigrid-CG did not converge");

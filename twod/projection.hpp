@@ -30,7 +30,6 @@ class Projection {
   Grid g_;
   LinearSolverKind kind_;
   double tol_;
-  PoissonLevel op_;
   PressureMultigrid multigrid_;
   SolveStats mg_stats_;
   PatternedMatrix A_;

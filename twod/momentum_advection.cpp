@@ -35,10 +35,10 @@ double upwind(double V, double q0, double q1, double q2, double q3, double c = 0
   return q2 - half * van_leer(q2 - q1, q3 - q2);
 }
 
-// What enters a control volume per unit volume and time through its two faces along one
-// direction (carriers at the lower and upper face, spacing h).
-double inflow(double lower, double upper, double h) {
-  return (std::max(lower, 0.0) + std::max(-upper, 0.0)) / h;
+// What enters a control volume per unit area and time through its two faces along one
+// direction (carriers at the lower and upper face); divided by the spacing, per unit volume.
+double inflow(double lower, double upper) {
+  return std::max(lower, 0.0) + std::max(-upper, 0.0);
 }
 
 // The flux form on both staggered control volumes. The carriers cx, cz (laid out like u and w)
@@ -46,14 +46,16 @@ double inflow(double lower, double upper, double h) {
 // (the velocity form) or the mass flux (the consistent form); the control volume's fluxes are
 // their averages, upwinded by the averaged velocity. Each value is
 //   (sum of carrier q over the faces - q_P sum of carriers) / norm(P, sum of carriers, inflow).
-// The stencil reaches two cells in each direction. Away from the periodic ends and from the bed
-// and top (two cells), it reads the arrays directly; elsewhere through the wrapped and clamped
-// indices. Both paths run the same arithmetic on the same values, so the result is the same;
-// the direct one saved the index work that made this ~12 % of a one-thread step.
+// Two passes: the faces first (each control-volume face is shared by two volumes, so its carrier
+// C and flux C q are computed once, into `faces`), then the volumes. The faces' stencils reach
+// two cells along their direction; away from the periodic ends and from the bed and top they
+// read the arrays directly, elsewhere through the wrapped and clamped indices (the same values;
+// the direct reads save the index work). Each volume's value is the same arithmetic on the same
+// numbers as when every volume reconstructed its own four faces, at half the reconstructions.
 template <class Norm>
 void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
                const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
-               std::vector<double>& adv_u, std::vector<double>& adv_w) {
+               AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w) {
   // Courant numbers of the time-centred face values (0: the plain upwind slope)
   const double cxr = dt_centre / g.dx, czr = dt_centre / g.dz;
   auto cx_of = [&](double V) { return std::abs(V) * cxr; };
@@ -65,6 +67,8 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
   adv_u.resize(g.cells());
   adv_w.resize(g.w_faces());
   for (int i = 0; i < nx; ++i) adv_w[g.at(i, 0)] = adv_w[g.at(i, nz)] = 0.0;
+  for (auto* v : {&faces.ux_c, &faces.ux_f, &faces.wz_c, &faces.wz_f}) v->resize(g.cells());
+  for (auto* v : {&faces.uz_c, &faces.uz_f, &faces.wx_c, &faces.wx_f}) v->resize(g.w_faces());
   // Accessors: q(i, k) for the u-rows (clamped to 0..nz-1) and the w-rows (0..nz), periodic in i.
   auto wrapped = [&](const std::vector<double>& q, int top) {
     return [&q, &g, top](int i, int k) { return q[g.at(i, std::clamp(k, 0, top))]; };
@@ -72,53 +76,12 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
   auto direct = [nx](const std::vector<double>& q) {
     return [&q, nx](int i, int k) { return q[std::size_t(k) * nx + i]; };
   };
-
-  // x-momentum on the control volume of u-face (i, k).
-  auto x_momentum = [&](int i, int k, auto&& U, auto&& W, auto&& CX, auto&& CZ) {
-    // x-fluxes at cell centres i-1 (left) and i (right)
-    const double Vl = 0.5 * (U(i - 1, k) + U(i, k)), Vr = 0.5 * (U(i, k) + U(i + 1, k));
-    const double Cl = 0.5 * (CX(i - 1, k) + CX(i, k)), Cr = 0.5 * (CX(i, k) + CX(i + 1, k));
-    const double ql = upwind(Vl, U(i - 2, k), U(i - 1, k), U(i, k), U(i + 1, k), cx_of(Vl));
-    const double qr = upwind(Vr, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(Vr));
-    // z-fluxes at corners (i, k) (bottom) and (i, k+1) (top)
-    const double Wb = k == 0 ? 0.0 : 0.5 * (W(i - 1, k) + W(i, k));
-    const double Wt = 0.5 * (W(i - 1, k + 1) + W(i, k + 1));
-    const double Cb = k == 0 ? 0.0 : 0.5 * (CZ(i - 1, k) + CZ(i, k));
-    const double Ct = 0.5 * (CZ(i - 1, k + 1) + CZ(i, k + 1));
-    const double qb =
-        k == 0 ? 0.0 : upwind(Wb, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1), cz_of(Wb));
-    const double qt = k == nz - 1
-                          ? U(i, k)
-                          : upwind(Wt, U(i, k - 1), U(i, k), U(i, k + 1), U(i, k + 2), cz_of(Wt));
-    const double div = (Cr - Cl) / g.dx + (Ct - Cb) / g.dz;
-    const double flux = (Cr * qr - Cl * ql) / g.dx + (Ct * qt - Cb * qb) / g.dz;
-    const double in = inflow(Cl, Cr, g.dx) + inflow(Cb, Ct, g.dz);
-    adv_u[g.at(i, k)] = (flux - U(i, k) * div) / norm_u(g.at(i, k), div, in);
-  };
-  // z-momentum on the control volume of interior w-face (i, k).
-  auto z_momentum = [&](int i, int k, auto&& U, auto&& W, auto&& CX, auto&& CZ) {
-    // x-fluxes at corners (i, k) (left) and (i+1, k) (right)
-    const double Vl = 0.5 * (U(i, k - 1) + U(i, k)), Vr = 0.5 * (U(i + 1, k - 1) + U(i + 1, k));
-    const double Cl = 0.5 * (CX(i, k - 1) + CX(i, k)), Cr = 0.5 * (CX(i + 1, k - 1) + CX(i + 1, k));
-    const double ql = upwind(Vl, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(Vl));
-    const double qr = upwind(Vr, W(i - 1, k), W(i, k), W(i + 1, k), W(i + 2, k), cx_of(Vr));
-    // z-fluxes at cell centres k-1 (bottom) and k (top)
-    const double Wb = 0.5 * (W(i, k - 1) + W(i, k)), Wt = 0.5 * (W(i, k) + W(i, k + 1));
-    const double Cb = 0.5 * (CZ(i, k - 1) + CZ(i, k)), Ct = 0.5 * (CZ(i, k) + CZ(i, k + 1));
-    const double qb = upwind(Wb, W(i, k - 2), W(i, k - 1), W(i, k), W(i, k + 1), cz_of(Wb));
-    const double qt = upwind(Wt, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(Wt));
-    const double div = (Cr - Cl) / g.dx + (Ct - Cb) / g.dz;
-    const double flux = (Cr * qr - Cl * ql) / g.dx + (Ct * qt - Cb * qb) / g.dz;
-    const double in = inflow(Cl, Cr, g.dx) + inflow(Cb, Ct, g.dz);
-    adv_w[g.at(i, k)] = (flux - W(i, k) * div) / norm_w(g.at(i, k), div, in);
-  };
-  // Row k of one control volume type: direct reads for i in [2, nx - 2) when the row's stencil
-  // stays inside [0, top], wrapped and clamped reads elsewhere.
-  auto row = [&](auto&& body, int k, int top) {
+  // Row k of faces: `body(i, k, U, W, CX, CZ)` with direct reads for i in [2, nx - 2) when
+  // `inside` (the stencil stays within the rows), wrapped and clamped reads elsewhere.
+  auto row = [&](auto&& body, int k, bool inside) {
     const auto Uw = wrapped(u, nz - 1), Ww = wrapped(w, nz), CXw = wrapped(cx, nz - 1),
                CZw = wrapped(cz, nz);
-    const bool inside = k >= 2 && k + 2 <= top && nx > 4;
-    if (!inside) {
+    if (!inside || nx <= 4) {
       for (int i = 0; i < nx; ++i) body(i, k, Uw, Ww, CXw, CZw);
       return;
     }
@@ -127,18 +90,84 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
     for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, CXd, CZd);
     for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, CXw, CZw);
   };
+  // The u-volumes' x-face at cell centre (i, k), between u-faces i and i + 1.
+  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& CX, auto&&) {
+    const double V = 0.5 * (U(i, k) + U(i + 1, k)), C = 0.5 * (CX(i, k) + CX(i + 1, k));
+    const std::size_t f = std::size_t(k) * nx + i;
+    faces.ux_c[f] = C;
+    faces.ux_f[f] = C * upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V));
+  };
+  // The u-volumes' z-face at corner (i, k), k = 0 .. nz: none through the bed; at the top q is
+  // extended with zero gradient.
+  auto u_z_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& CZ) {
+    const std::size_t f = std::size_t(k) * nx + i;
+    if (k == 0) {
+      faces.uz_c[f] = 0.0;
+      faces.uz_f[f] = 0.0;
+      return;
+    }
+    const double V = 0.5 * (W(i - 1, k) + W(i, k)), C = 0.5 * (CZ(i - 1, k) + CZ(i, k));
+    const double q =
+        k == nz ? U(i, k - 1) : upwind(V, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1), cz_of(V));
+    faces.uz_c[f] = C;
+    faces.uz_f[f] = C * q;
+  };
+  // The w-volumes' x-face at corner (i, k), k = 1 .. nz - 1.
+  auto w_x_face = [&](int i, int k, auto&& U, auto&& W, auto&& CX, auto&&) {
+    const double V = 0.5 * (U(i, k - 1) + U(i, k)), C = 0.5 * (CX(i, k - 1) + CX(i, k));
+    const std::size_t f = std::size_t(k) * nx + i;
+    faces.wx_c[f] = C;
+    faces.wx_f[f] = C * upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V));
+  };
+  // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
+  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& CZ) {
+    const double V = 0.5 * (W(i, k) + W(i, k + 1)), C = 0.5 * (CZ(i, k) + CZ(i, k + 1));
+    const std::size_t f = std::size_t(k) * nx + i;
+    faces.wz_c[f] = C;
+    faces.wz_f[f] = C * upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V));
+  };
   // (rows in parallel: each entry is written once; parallel.hpp)
 #pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k) row(x_momentum, k, nz - 1);
+  for (int k = 0; k <= nz; ++k) {
+    if (k < nz) row(u_x_face, k, true);
+    row(u_z_face, k, k >= 2 && k + 1 <= nz - 1);
+    if (k > 0 && k < nz) row(w_x_face, k, true);
+    if (k < nz) row(w_z_face, k, k >= 1 && k + 2 <= nz);
+  }
+  // The volumes, from their faces (left/right, bottom/top).
+  // (multiplied by the inverse spacings: six divisions per volume were most of this pass's time)
+  const double idx = 1.0 / g.dx, idz = 1.0 / g.dz;
+  auto volume = [&](double Cl, double Cr, double Fl, double Fr, double Cb, double Ct, double Fb,
+                    double Ft, double q, std::size_t c, auto&& norm) {
+    const double div = (Cr - Cl) * idx + (Ct - Cb) * idz;
+    const double flux = (Fr - Fl) * idx + (Ft - Fb) * idz;
+    const double in = inflow(Cl, Cr) * idx + inflow(Cb, Ct) * idz;
+    return (flux - q * div) / norm(c, div, in);
+  };
 #pragma omp parallel for schedule(static)
-  for (int k = 1; k < nz; ++k) row(z_momentum, k, nz);
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t c = std::size_t(k) * nx + i,
+                        l = std::size_t(k) * nx + (i == 0 ? nx - 1 : i - 1);
+      adv_u[c] = volume(faces.ux_c[l], faces.ux_c[c], faces.ux_f[l], faces.ux_f[c], faces.uz_c[c],
+                        faces.uz_c[c + nx], faces.uz_f[c], faces.uz_f[c + nx], u[c], c, norm_u);
+    }
+#pragma omp parallel for schedule(static)
+  for (int k = 1; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const std::size_t c = std::size_t(k) * nx + i,
+                        r = std::size_t(k) * nx + (i == nx - 1 ? 0 : i + 1);
+      adv_w[c] =
+          volume(faces.wx_c[c], faces.wx_c[r], faces.wx_f[c], faces.wx_f[r], faces.wz_c[c - nx],
+                 faces.wz_c[c], faces.wz_f[c - nx], faces.wz_f[c], w[c], c, norm_w);
+    }
 }
 }  // namespace
 
-void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv_u,
-                        std::vector<double>& adv_w) {
+void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
+                        std::vector<double>& adv_u, std::vector<double>& adv_w) {
   auto unit = [](std::size_t, double, double) { return 1.0; };
-  flux_form(g, s, s.u, s.w, unit, unit, 0.0, adv_u, adv_w);
+  flux_form(g, s, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
 }
 
 void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
@@ -156,7 +185,8 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
 void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
                                    const std::vector<double>& rho_u,
                                    const std::vector<double>& rho_w, double dt,
-                                   std::vector<double>& adv_u, std::vector<double>& adv_w) {
+                                   AdvectionFaces& faces, std::vector<double>& adv_u,
+                                   std::vector<double>& adv_w) {
   // rho_new = rho^n - dt div(G): the density that the same mass fluxes leave in the control
   // volume, so that the update of rho u is a weighted mean of u^n and the incoming u's. The
   // staggered volume's fluxes are averages of the cells' fluxes, not a partition of its own
@@ -168,7 +198,7 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
       return std::max({rho[c] - dt * div, rho[c], dt * in});
     };
   };
-  flux_form(g, s, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, adv_u, adv_w);
+  flux_form(g, s, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u, adv_w);
 }
 
 }  // namespace granbench::twod

@@ -10,9 +10,19 @@
 
 namespace granbench::twod {
 
+// The faces of the staggered control volumes, each computed once and read by the two volumes
+// that share it: the carrier C (the average of two carriers) and the flux C q with q upwinded.
+// Scratch kept by the caller from one step to the next (no allocation per step).
+struct AdvectionFaces {
+  std::vector<double> ux_c, ux_f;  // u-volumes' x-faces, at cell centres (i, k)
+  std::vector<double> uz_c, uz_f;  // u-volumes' z-faces, at corners (i, k), k = 0 .. nz
+  std::vector<double> wx_c, wx_f;  // w-volumes' x-faces, at corners (i, k), k = 1 .. nz - 1 used
+  std::vector<double> wz_c, wz_f;  // w-volumes' z-faces, at cell centres (i, k)
+};
+
 // adv_u at every u-face, adv_w at the interior w-faces (k = 1 .. nz-1; others left 0).
-void momentum_advection(const Grid& g, const Fields& s, std::vector<double>& adv_u,
-                        std::vector<double>& adv_w);
+void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
+                        std::vector<double>& adv_u, std::vector<double>& adv_w);
 
 // Mass fluxes through the cell faces over one step [kg m^-2 s^-1]: x at x-face (i, k), z at
 // z-face (i, k) (nz + 1 rows).
@@ -33,6 +43,7 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
 void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
                                    const std::vector<double>& rho_u,
                                    const std::vector<double>& rho_w, double dt,
-                                   std::vector<double>& adv_u, std::vector<double>& adv_w);
+                                   AdvectionFaces& faces, std::vector<double>& adv_u,
+                                   std::vector<double>& adv_w);
 
 }  // namespace granbench::twod

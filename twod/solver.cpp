@@ -118,8 +118,8 @@ double Solver::step(double dt_limit) {
     const double rho_g = params_.rheology.material.bulk_density(),
                  rho_l = params_.rheology.rho_light;
     mass_fluxes(g_, s_, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
-    consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt, adv_cons_u_,
-                                  adv_cons_w_);
+    consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt,
+                                  advection_faces_, adv_cons_u_, adv_cons_w_);
   }
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
@@ -141,7 +141,7 @@ double Solver::step(double dt_limit) {
     adv_u_.swap(adv_cons_u_);
     adv_w_.swap(adv_cons_w_);
   } else if (params_.advect_momentum) {
-    momentum_advection(g_, s_, adv_u_, adv_w_);
+    momentum_advection(g_, s_, advection_faces_, adv_u_, adv_w_);
     if (params_.advection_ab2) {
       const bool have_old = !adv_u_old_.empty() && r > 0.0;
       adv_u_old_.swap(adv_u_);  // adv_u_old_ = A^n, adv_u_ = A^{n-1}

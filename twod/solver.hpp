@@ -91,6 +91,7 @@ class Solver {
   std::vector<double> adv_u_, adv_w_, u_star_, w_star_;
   GrainFluxes grain_fluxes_;                     // the VOF step's fluxes (consistent_momentum)
   MassFluxes mass_fluxes_;                       // and the mass they carry
+  AdvectionFaces advection_faces_;               // scratch of the momentum advection
   std::vector<double> adv_cons_u_, adv_cons_w_;  // the consistent operator at level n
   std::vector<double> adv_u_old_, adv_w_old_;    // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_, h_after_;       // column heights before and after the VOF step

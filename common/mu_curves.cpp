@@ -130,6 +130,24 @@ double MuCurve::dmu_dI(double I) const {
   return upper_branch_derivative(I);
 }
 
+MuCurve::WithLogSlope MuCurve::mu_with_log_slope(double I) const {
+  if (I <= 0.0) return {mu(I), 0.0};
+  if (I <= junction_I_) {  // (5.2): mu = sqrt(alpha / L), L = ln(A_- / I), so I mu'/mu = 1 / (2 L)
+    const double L = std::log(A_minus_ / I);
+    return {std::sqrt(material_.alpha / L), 0.5 / L};
+  }
+  if (kind_ == CurveKind::KamrinKoval) {
+    const double m = upper_branch(I);
+    return {m, I * upper_branch_derivative(I) / m};
+  }
+  // The rational upper branch mu = N / Q, N = mu_s I0 + mu_d I + q I^2, Q = I0 + I:
+  // I mu'/mu = I (N' Q - N) / (Q N).
+  const Material& m = material_;
+  const double num = m.mu_s * m.I0 + m.mu_d * I + quad_ * I * I;
+  const double den = m.I0 + I;
+  return {num / den, I * ((m.mu_d + 2.0 * quad_ * I) * den - num) / (den * num)};
+}
+
 double MuCurve::inverse(double target) const {
   if (!(target > mu_min_ && target < mu_max_)) {
     std::ostringstream msg;

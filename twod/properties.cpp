@@ -68,12 +68,12 @@ GranularViscosity ViscosityModel::granular_with_tangent(double p, double D) cons
   if (p <= 0.0) return {r_.eta_min, 1.0};
   const double Df = std::max(D, r_.D_min);
   const double I = inertial_number(p, Df);
-  const double mu = curve_.mu(I);
+  const auto [mu, gamma_over_mu] = curve_.mu_with_log_slope(I);
   const double eta = mu * p / (2.0 * Df);  // (2.11)
   // eta does not follow |D| where |D| is floored or eta is capped or floored: tangent = secant
   if (D <= r_.D_min || eta <= r_.eta_min || eta >= r_.eta_max)
     return {std::clamp(eta, r_.eta_min, r_.eta_max), 1.0};
-  return {eta, std::clamp(I * curve_.dmu_dI(I) / mu, 0.0, 1.0)};  // Gamma / mu
+  return {eta, std::clamp(gamma_over_mu, 0.0, 1.0)};  // Gamma / mu = I mu'(I) / mu
 }
 
 double ViscosityModel::mix_tangent(double f, double eta_g, double eta_gt) const {
@@ -133,17 +133,18 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // gamma = du/dz + dw/dx at the corners, with the bed and top conditions.
   std::vector<double>& gam = props.gamma_n;
   gam.resize(g.corners());
+  const double idx = 1.0 / g.dx, idz = 1.0 / g.dz;  // (divisions were a visible part of this)
 #pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k)
     for (int i = 0; i < nx; ++i) {
-      const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) / g.dx;
+      const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) * idx;
       double dudz;
       if (k == 0)
-        dudz = 2.0 * (u[g.at(i, 0)] - g.bed_velocity()) / g.dz;
+        dudz = 2.0 * (u[g.at(i, 0)] - g.bed_velocity()) * idz;
       else if (k == nz)
         dudz = 0.0;
       else
-        dudz = (u[g.at(i, k)] - u[g.at(i, k - 1)]) / g.dz;
+        dudz = (u[g.at(i, k)] - u[g.at(i, k - 1)]) * idz;
       gam[g.at(i, k)] = dudz + dwdx;
     }
   // Interface pressure (Rheology::interface_pressure): column heights and, per column, the
@@ -215,8 +216,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
-      Dxx[c] = (u[g.at(i + 1, k)] - u[c]) / g.dx;
-      Dzz[c] = (w[g.at(i, k + 1)] - w[c]) / g.dz;
+      Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
+      Dzz[c] = (w[g.at(i, k + 1)] - w[c]) * idz;
       const double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
                                   gam[g.at(i + 1, k + 1)]);
       const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);

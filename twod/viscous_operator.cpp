@@ -134,14 +134,14 @@ void ViscousOperator::set_stress(const std::vector<double>& eta_c,
 void ViscousOperator::set(const Properties& props, const std::vector<double>& eta_c,
                           const std::vector<double>& eta_n, double dt) {
   set_stress(eta_c, eta_n);
-  const double V = g_.cell_volume();
+  const double V_dt = g_.cell_volume() / dt;
   const int nx = g_.nx, nz = g_.nz;
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < nx; ++i)
     for (int k = 0; k < nz; ++k) {
       const std::size_t c = g_.at(i, k);
-      mass_u_[i * nz + k] = props.rho_u[c] * V / dt;
-      if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V / dt;
+      mass_u_[i * nz + k] = props.rho_u[c] * V_dt;
+      if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V_dt;
     }
   // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k (lines in parallel).
   auto factor_row = [&](int row, auto&& entries) {

@@ -84,12 +84,13 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   x_.resize(op_.size());
   // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n. (Loops over
   // rows in parallel: each entry is written once; parallel.hpp.)
+  const double inv_dt = 1.0 / dt;
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.u_index(i, k);
-      b_[r] = props.rho_u[c] * V * (s.u[c] / dt - adv_u[c] + gx_) -
+      b_[r] = props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c] + gx_) -
               g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];
@@ -99,7 +100,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.w_index(i, k);
-      b_[r] = props.rho_w[c] * V * (s.w[c] / dt - adv_w[c] + gz_) -
+      b_[r] = props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
               g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
     }

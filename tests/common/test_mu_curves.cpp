@@ -33,6 +33,22 @@ TEST(MuCurves, AnalyticDerivativeMatchesCentralDifference) {
   }
 }
 
+TEST(MuCurves, CombinedValueAndLogSlopeMatchTheSeparateOnes) {
+  for (CurveKind kind : kAll) {
+    const MuCurve c(kind, Material{});
+    std::vector<double> points = sample_I();
+    if (c.junction_I() > 0.0)  // both sides of the junction of the low-I branch
+      points.insert(points.end(), {c.junction_I() * (1.0 - 1e-9), c.junction_I() * (1.0 + 1e-9)});
+    for (double I : points) {
+      const auto [mu, slope] = c.mu_with_log_slope(I);
+      const double expected = I * c.dmu_dI(I) / c.mu(I);
+      EXPECT_NEAR(mu, c.mu(I), 1e-14 * c.mu(I)) << curve_name(kind) << " at I = " << I;
+      EXPECT_NEAR(slope, expected, 1e-13 * std::abs(expected) + 1e-300)
+          << curve_name(kind) << " at I = " << I;
+    }
+  }
+}
+
 TEST(MuCurves, InverseOfCurveIsIdentity) {
   for (CurveKind kind : kAll) {
     const MuCurve c(kind, Material{});

@@ -109,3 +109,38 @@ TEST(PressureMultigrid, PreconditionedCgMatchesADirectSolve) {
       EXPECT_LT((x - exact).norm(), 1e-8 * exact.norm());
     }
 }
+
+TEST(PressureMultigrid, OneCycleAsAStationaryIterationReducesTheErrorFivefold) {
+  // x <- x + M^{-1} (b - A x) with M^{-1} one cycle. The cycle forms the residual after its
+  // pre-smoothing from the neighbour couplings alone (pressure_multigrid.cpp); a coarse
+  // correction built from a wrong residual stops reducing the smooth error, which the line
+  // smoother cannot remove. Measured: 0.04-0.14 per cycle here (the first cycle the most).
+  for (const double rho_light : {0.15, 1.5e-3})
+    for (int nx : {32, 96}) {
+      SCOPED_TRACE(nx);
+      SCOPED_TRACE(rho_light);
+      const int nz = nx == 96 ? 32 : 16;
+      const PoissonLevel L = layered_operator(nx, nz, rho_light);
+      PressureMultigrid mg;
+      mg.set_operator(L);
+      const Eigen::SparseMatrix<double> A = assembled(L);
+      Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
+      ASSERT_EQ(llt.info(), Eigen::Success);
+      const Eigen::VectorXd b = random_vector(nx * nz, 4), exact = llt.solve(b);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz), r, z;
+      auto energy_error = [&] {
+        const Eigen::VectorXd e = x - exact;
+        return std::sqrt(e.dot(A * e));
+      };
+      double before = energy_error();
+      for (int cycle = 0; cycle < 4; ++cycle) {
+        L.apply(x, r);
+        r = b - r;
+        mg.precondition(r, z);
+        x += z;
+        const double after = energy_error();
+        EXPECT_LT(after, 0.2 * before) << "cycle " << cycle;
+        before = after;
+      }
+    }
+}

@@ -151,6 +151,9 @@ int main(int argc, char** argv) {
   params.solver_tolerance = a.num("ptol", params.solver_tolerance);
   params.advect_momentum = a.num("advect_momentum", 1) != 0;
   params.viscosity_passes = int(a.num("passes", params.viscosity_passes));
+  params.stress_bdf2 = a.num("bdf2", params.stress_bdf2 ? 1 : 0) != 0;
+  params.interface_midstep_velocity =
+      a.num("mid_vof", params.interface_midstep_velocity ? 1 : 0) != 0;
   params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
   params.consistent_momentum = a.num("consistent", params.consistent_momentum ? 1 : 0) != 0;
   params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;

@@ -42,6 +42,13 @@ const std::map<std::string, DatasetDoc>& by_path() {
        {"Pa s", "last pressure increment times dt (solver start)"}},
       {"/warm_start/advection_u", {"m/s^2", "last downslope advection term (solver start)"}},
       {"/warm_start/advection_w", {"m/s^2", "last slope-normal advection term (solver start)"}},
+      {"/warm_start/increment_u",
+       {"m/s", "last downslope non-advective velocity increment (BDF2 memory)"}},
+      {"/warm_start/increment_w",
+       {"m/s", "last slope-normal non-advective velocity increment (BDF2 memory)"}},
+      {"/warm_start/previous_u", {"m/s", "previous level's downslope velocity (mid-step option)"}},
+      {"/warm_start/previous_w",
+       {"m/s", "previous level's slope-normal velocity (mid-step option)"}},
   };
   return t;
 }

@@ -112,6 +112,14 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
     out.write("/warm_start/advection_u", w.advection_u);
     out.write("/warm_start/advection_w", w.advection_w);
   }
+  if (!w.increment_u.empty()) {
+    out.write("/warm_start/increment_u", w.increment_u);
+    out.write("/warm_start/increment_w", w.increment_w);
+  }
+  if (!w.previous_u.empty()) {
+    out.write("/warm_start/previous_u", w.previous_u);
+    out.write("/warm_start/previous_w", w.previous_w);
+  }
   out.write("/warm_start/previous_dt", std::span<const double>(&w.previous_dt, 1));
   if (!snapshot_times.empty()) out.write("/run/snapshot_times", snapshot_times);
   for (const auto& [name, v] : checkpoint_physics(solver.params()))
@@ -152,6 +160,10 @@ Checkpoint read_checkpoint(const std::string& path) {
   };
   optional("advection_u", c.warm_start.advection_u);
   optional("advection_w", c.warm_start.advection_w);
+  optional("increment_u", c.warm_start.increment_u);
+  optional("increment_w", c.warm_start.increment_w);
+  optional("previous_u", c.warm_start.previous_u);
+  optional("previous_w", c.warm_start.previous_w);
   std::vector<double> dt;
   optional("previous_dt", dt);
   if (!dt.empty()) c.warm_start.previous_dt = dt.at(0);

@@ -52,8 +52,12 @@ double inflow(double lower, double upper) {
 // read the arrays directly, elsewhere through the wrapped and clamped indices (the same values;
 // the direct reads save the index work). Each volume's value is the same arithmetic on the same
 // numbers as when every volume reconstructed its own four faces, at half the reconstructions.
+// The transported components qu, qw (laid out like u and w) are the velocity itself for the
+// momentum, or another field carried with it (the BDF2 step's memory, solver.cpp); the upwind
+// side and the time centring follow the velocity s.u, s.w either way.
 template <class Norm>
-void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
+void flux_form(const Grid& g, const Fields& s, const std::vector<double>& qu,
+               const std::vector<double>& qw, const std::vector<double>& cx,
                const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
                AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w) {
   // Courant numbers of the time-centred face values (0: the plain upwind slope)
@@ -76,30 +80,31 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
   auto direct = [nx](const std::vector<double>& q) {
     return [&q, nx](int i, int k) { return q[std::size_t(k) * nx + i]; };
   };
-  // Row k of faces: `body(i, k, U, W, CX, CZ)` with direct reads for i in [2, nx - 2) when
-  // `inside` (the stencil stays within the rows), wrapped and clamped reads elsewhere.
+  // Row k of faces: `body(i, k, U, W, QU, QW, CX, CZ)` with direct reads for i in [2, nx - 2)
+  // when `inside` (the stencil stays within the rows), wrapped and clamped reads elsewhere.
   auto row = [&](auto&& body, int k, bool inside) {
-    const auto Uw = wrapped(u, nz - 1), Ww = wrapped(w, nz), CXw = wrapped(cx, nz - 1),
-               CZw = wrapped(cz, nz);
+    const auto Uw = wrapped(u, nz - 1), Ww = wrapped(w, nz), QUw = wrapped(qu, nz - 1),
+               QWw = wrapped(qw, nz), CXw = wrapped(cx, nz - 1), CZw = wrapped(cz, nz);
     if (!inside || nx <= 4) {
-      for (int i = 0; i < nx; ++i) body(i, k, Uw, Ww, CXw, CZw);
+      for (int i = 0; i < nx; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
       return;
     }
-    const auto Ud = direct(u), Wd = direct(w), CXd = direct(cx), CZd = direct(cz);
-    for (int i = 0; i < 2; ++i) body(i, k, Uw, Ww, CXw, CZw);
-    for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, CXd, CZd);
-    for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, CXw, CZw);
+    const auto Ud = direct(u), Wd = direct(w), QUd = direct(qu), QWd = direct(qw), CXd = direct(cx),
+               CZd = direct(cz);
+    for (int i = 0; i < 2; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
+    for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, QUd, QWd, CXd, CZd);
+    for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
   };
   // The u-volumes' x-face at cell centre (i, k), between u-faces i and i + 1.
-  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& CX, auto&&) {
+  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& Q, auto&&, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k) + U(i + 1, k)), C = 0.5 * (CX(i, k) + CX(i + 1, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.ux_c[f] = C;
-    faces.ux_f[f] = C * upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V));
+    faces.ux_f[f] = C * upwind(V, Q(i - 1, k), Q(i, k), Q(i + 1, k), Q(i + 2, k), cx_of(V));
   };
   // The u-volumes' z-face at corner (i, k), k = 0 .. nz: none through the bed; at the top q is
   // extended with zero gradient.
-  auto u_z_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& CZ) {
+  auto u_z_face = [&](int i, int k, auto&&, auto&& W, auto&& Q, auto&&, auto&&, auto&& CZ) {
     const std::size_t f = std::size_t(k) * nx + i;
     if (k == 0) {
       faces.uz_c[f] = 0.0;
@@ -108,23 +113,23 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
     }
     const double V = 0.5 * (W(i - 1, k) + W(i, k)), C = 0.5 * (CZ(i - 1, k) + CZ(i, k));
     const double q =
-        k == nz ? U(i, k - 1) : upwind(V, U(i, k - 2), U(i, k - 1), U(i, k), U(i, k + 1), cz_of(V));
+        k == nz ? Q(i, k - 1) : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
     faces.uz_c[f] = C;
     faces.uz_f[f] = C * q;
   };
   // The w-volumes' x-face at corner (i, k), k = 1 .. nz - 1.
-  auto w_x_face = [&](int i, int k, auto&& U, auto&& W, auto&& CX, auto&&) {
+  auto w_x_face = [&](int i, int k, auto&& U, auto&&, auto&&, auto&& Q, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k - 1) + U(i, k)), C = 0.5 * (CX(i, k - 1) + CX(i, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wx_c[f] = C;
-    faces.wx_f[f] = C * upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V));
+    faces.wx_f[f] = C * upwind(V, Q(i - 2, k), Q(i - 1, k), Q(i, k), Q(i + 1, k), cx_of(V));
   };
   // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
-  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& CZ) {
+  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& Q, auto&&, auto&& CZ) {
     const double V = 0.5 * (W(i, k) + W(i, k + 1)), C = 0.5 * (CZ(i, k) + CZ(i, k + 1));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wz_c[f] = C;
-    faces.wz_f[f] = C * upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V));
+    faces.wz_f[f] = C * upwind(V, Q(i, k - 1), Q(i, k), Q(i, k + 1), Q(i, k + 2), cz_of(V));
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
 #pragma omp parallel for schedule(static)
@@ -150,7 +155,7 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
       const std::size_t c = std::size_t(k) * nx + i,
                         l = std::size_t(k) * nx + (i == 0 ? nx - 1 : i - 1);
       adv_u[c] = volume(faces.ux_c[l], faces.ux_c[c], faces.ux_f[l], faces.ux_f[c], faces.uz_c[c],
-                        faces.uz_c[c + nx], faces.uz_f[c], faces.uz_f[c + nx], u[c], c, norm_u);
+                        faces.uz_c[c + nx], faces.uz_f[c], faces.uz_f[c + nx], qu[c], c, norm_u);
     }
 #pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
@@ -159,7 +164,7 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
                         r = std::size_t(k) * nx + (i == nx - 1 ? 0 : i + 1);
       adv_w[c] =
           volume(faces.wx_c[c], faces.wx_c[r], faces.wx_f[c], faces.wx_f[r], faces.wz_c[c - nx],
-                 faces.wz_c[c], faces.wz_f[c - nx], faces.wz_f[c], w[c], c, norm_w);
+                 faces.wz_c[c], faces.wz_f[c - nx], faces.wz_f[c], qw[c], c, norm_w);
     }
 }
 }  // namespace
@@ -167,7 +172,14 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
 void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
                         std::vector<double>& adv_u, std::vector<double>& adv_w) {
   auto unit = [](std::size_t, double, double) { return 1.0; };
-  flux_form(g, s, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
+  flux_form(g, s, s.u, s.w, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
+}
+
+void velocity_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
+                        const std::vector<double>& qw, AdvectionFaces& faces,
+                        std::vector<double>& adv_u, std::vector<double>& adv_w) {
+  auto unit = [](std::size_t, double, double) { return 1.0; };
+  flux_form(g, s, qu, qw, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
 }
 
 void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
@@ -182,11 +194,11 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
   for (long c = 0; c < nz; ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
 }
 
-void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
-                                   const std::vector<double>& rho_u,
-                                   const std::vector<double>& rho_w, double dt,
-                                   AdvectionFaces& faces, std::vector<double>& adv_u,
-                                   std::vector<double>& adv_w) {
+void consistent_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
+                          const std::vector<double>& qw, const MassFluxes& m,
+                          const std::vector<double>& rho_u, const std::vector<double>& rho_w,
+                          double dt, AdvectionFaces& faces, std::vector<double>& adv_u,
+                          std::vector<double>& adv_w) {
   // rho_new = rho^n - dt div(G): the density that the same mass fluxes leave in the control
   // volume, so that the update of rho u is a weighted mean of u^n and the incoming u's. The
   // staggered volume's fluxes are averages of the cells' fluxes, not a partition of its own
@@ -198,7 +210,16 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
       return std::max({rho[c] - dt * div, rho[c], dt * in});
     };
   };
-  flux_form(g, s, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u, adv_w);
+  flux_form(g, s, qu, qw, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u,
+            adv_w);
+}
+
+void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
+                                   const std::vector<double>& rho_u,
+                                   const std::vector<double>& rho_w, double dt,
+                                   AdvectionFaces& faces, std::vector<double>& adv_u,
+                                   std::vector<double>& adv_w) {
+  consistent_transport(g, s, s.u, s.w, m, rho_u, rho_w, dt, faces, adv_u, adv_w);
 }
 
 }  // namespace granbench::twod

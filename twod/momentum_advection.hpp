@@ -24,6 +24,13 @@ struct AdvectionFaces {
 void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
                         std::vector<double>& adv_u, std::vector<double>& adv_w);
 
+// (u . grad) q for another field (qu, qw) laid out like u and w, by the same flux form as
+// momentum_advection (which is this with q = u): the velocity form's transport of the BDF2
+// step's memory (solver.cpp).
+void velocity_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
+                        const std::vector<double>& qw, AdvectionFaces& faces,
+                        std::vector<double>& adv_u, std::vector<double>& adv_w);
+
 // Mass fluxes through the cell faces over one step [kg m^-2 s^-1]: x at x-face (i, k), z at
 // z-face (i, k) (nz + 1 rows).
 struct MassFluxes {
@@ -45,5 +52,15 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
                                    const std::vector<double>& rho_w, double dt,
                                    AdvectionFaces& faces, std::vector<double>& adv_u,
                                    std::vector<double>& adv_w);
+
+// The same transport for another field (qu, qw) carried with the grains and the light fluid by
+// the mass fluxes m, upwinded and time-centred by the velocity of s: (qu - dt adv_u, qw - dt
+// adv_w) is that field moved over the step with the mass. The BDF2 step carries its memory,
+// the last step's velocity increment, this way (solver.cpp).
+void consistent_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
+                          const std::vector<double>& qw, const MassFluxes& m,
+                          const std::vector<double>& rho_u, const std::vector<double>& rho_w,
+                          double dt, AdvectionFaces& faces, std::vector<double>& adv_u,
+                          std::vector<double>& adv_w);
 
 }  // namespace granbench::twod

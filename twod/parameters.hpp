@@ -108,6 +108,17 @@ struct SolverParams {
   // eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta is taken at the new time level
   // to the accuracy of the iteration (about n times the cost).
   int viscosity_passes = 1;
+  // Time integration of the stress, pressure and gravity (the non-advective part F of the step).
+  // true: second-order BDF2 on the increment, u^{n+1} - u~ = (dt/a0) F^{n+1} + (a2/a0) delta^n,
+  // with u~ the advected velocity, delta^n the previous step's non-advective increment carried
+  // with the material, a0 = (1+2r)/(1+r), a2 = r^2/(1+r), r = dt_n/dt_{n-1} (solver.cpp). false:
+  // backward Euler, first order: the section 7 growth 0.6 % lower at cfl 0.4
+  // (docs/twod-validation.md §10).
+  bool stress_bdf2 = true;
+  // The velocity that moves the interface (and carries the momentum's mass fluxes): true: the
+  // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are;
+  // false: u^n, a first-order lag of the surface's kinematic condition.
+  bool interface_midstep_velocity = false;
   bool advect_momentum = true;
   // Time integration of the velocity form (consistent_momentum = false): true = second-order
   // Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps

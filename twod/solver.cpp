@@ -9,10 +9,20 @@
 //
 //   f^{n+1}          = VOF(f^n, u^n, dt)                   split PLIC, Weymouth-Yue
 //   rho^{n+1}, eta   = properties(f^{n+1}, u^n, p*)        p* = p^n + hydrostatic change h^n ->
-//   h^{n+1} u*               : rho^{n+1}(u* - u^n)/dt = div(tau^{n+1}) - grad p^n
-//                                               + rho^{n+1}(g - A^{n+1/2})
-//   dp               : div(grad dp / rho^{n+1}) = div u* / dt
-//   u^{n+1} = u* - dt grad dp / rho^{n+1},   p^{n+1} = p^n + dp
+//   h^{n+1} u*               : rho^{n+1}(a0 u* - a0 u~ - a2 delta^n)/dt = div(tau^{n+1}) - grad p^n
+//                                               + rho^{n+1} g,      u~ = u^n - dt A^{n+1/2}
+//   dp               : div(grad dp / rho^{n+1}) = a0 div u* / dt
+//   u^{n+1} = u* - (dt/a0) grad dp / rho^{n+1},   p^{n+1} = p^n + dp
+//
+// The non-advective part (stress, pressure, gravity) is integrated by BDF2 written on the
+// increment (stress_bdf2): with the last step's increment delta^n = u^n - u~^{n-1} and r =
+// dt_n/dt_{n-1}, a0 = (1+2r)/(1+r), a2 = r^2/(1+r), the variable-step BDF2 coefficients (a0 = 1,
+// a2 = 0 on the first step: backward Euler). Since a0 - (1+r) + a2 = 0, this is BDF2 for the whole
+// velocity with the advection kept as the time-centred increment u~ - u^n; the recursion makes
+// delta^{n+1} = dt F(t_{n+1/2}) + O(dt^3), so the step is second order. In the standard
+// incremental pressure correction of Guermond, Minev & Shen (2006) the projection then takes the
+// step dt/a0. Backward Euler (stress_bdf2 = false) damped the surface mode by a first-order
+// error: its growth rose by 1.4 % from cfl 0.4 to 0.1 (docs/twod-validation.md §9, §10).
 //
 // with the advection A carried by the mass fluxes of the VOF step, rho^{n+1}(u^n - dt A) =
 // rho^n u^n - dt div(G q) with time-centred face values q (momentum_advection.hpp; the option
@@ -79,6 +89,10 @@ WarmStart Solver::warm_start() const {
   w.advection_u = adv_u_old_;
   w.advection_w = adv_w_old_;
   w.previous_dt = dt_previous_;
+  w.increment_u = increment_u_;
+  w.increment_w = increment_w_;
+  w.previous_u = previous_.u;
+  w.previous_w = previous_.w;
   return w;
 }
 
@@ -91,6 +105,10 @@ void Solver::set_warm_start(const WarmStart& w) {
   adv_u_old_ = w.advection_u;
   adv_w_old_ = w.advection_w;
   dt_previous_ = w.previous_dt;
+  increment_u_ = w.increment_u;
+  increment_w_ = w.increment_w;
+  previous_.u = w.previous_u;
+  previous_.w = w.previous_w;
 }
 
 double Solver::step(double dt_limit) {
@@ -110,17 +128,20 @@ double Solver::step(double dt_limit) {
   if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
   const bool consistent =
       params_.consistent_momentum && params_.advect_momentum && params_.advect_interface;
+  const Fields& carrier = interface_velocity(r);
   if (params_.advect_interface)
-    advect_volume_fraction(g_, s_.u, s_.w, dt, stats_.steps % 2 == 0, s_.f, vof_, vof_work_,
-                           consistent ? &grain_fluxes_ : nullptr);
+    advect_volume_fraction(g_, carrier.u, carrier.w, dt, stats_.steps % 2 == 0, s_.f, vof_,
+                           vof_work_, consistent ? &grain_fluxes_ : nullptr);
   // the consistent operator needs the level-n face densities, which step 2 replaces
   if (consistent) {
     const double rho_g = params_.rheology.material.bulk_density(),
                  rho_l = params_.rheology.rho_light;
-    mass_fluxes(g_, s_, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
+    mass_fluxes(g_, carrier, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
     consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt,
                                   advection_faces_, adv_cons_u_, adv_cons_w_);
   }
+  // the BDF2 memory moves with the material over the step (before step 2: level-n densities)
+  transport_increment(dt, consistent);
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
@@ -163,22 +184,27 @@ double Solver::step(double dt_limit) {
     adv_u_.assign(g_.cells(), 0.0);
     adv_w_.assign(g_.w_faces(), 0.0);
   }
+  // BDF2 for the non-advective part (stress_bdf2): the predictor and projection take the step
+  // dt/a0 from u^n with the advection a0 A - (a2/dt) delta^n, so that their sum is
+  // u^{n+1} = u~ + (dt/a0) F^{n+1} + (a2/a0) delta^n with u~ = u^n - dt A.
+  const double dt_f = bdf2_rescale_advection(dt, r);
   stats_.viscous_iterations +=
-      viscous_.predict(s_, props_, adv_u_, adv_w_, dt, u_star_, w_star_, force_u_);
+      viscous_.predict(s_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_);
   // 4. projection
   if (params_.viscosity_passes > 1) old_ = s_;  // u^n, p^n for the further passes
-  stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, s_);
+  stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt_f, s_);
   // 5. optional Picard passes: eta from the provisional u^{n+1}, p^{n+1}, then steps 3-4 again
   for (int pass = 1; pass < params_.viscosity_passes; ++pass) {
     update_viscosity(g_, s_, model_, props_);
     Fields next = old_;
     stats_.viscous_iterations +=
-        viscous_.predict(old_, props_, adv_u_, adv_w_, dt, u_star_, w_star_, force_u_, &s_);
-    stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt, next);
+        viscous_.predict(old_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_, &s_);
+    stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt_f, next);
     s_.u.swap(next.u);
     s_.w.swap(next.w);
     s_.p.swap(next.p);
   }
+  if (params_.stress_bdf2) record_increment();
   dt_previous_ = dt;
 
   s_.t += dt;
@@ -188,6 +214,72 @@ double Solver::step(double dt_limit) {
   if (!shortened) stats_.dt_last = dt;  // a shortened step does not throttle the next one
   check_health();
   return dt;
+}
+
+const Fields& Solver::interface_velocity(double r) {
+  if (!params_.interface_midstep_velocity) return s_;
+  const bool have_previous = r > 0.0 && previous_.u.size() == s_.u.size();
+  if (have_previous) {
+    midstep_.u.resize(s_.u.size());
+    midstep_.w.resize(s_.w.size());
+    const long nu = long(s_.u.size()), nw = long(s_.w.size());
+    const double c = 0.5 * r;
+#pragma omp parallel for schedule(static)
+    for (long n = 0; n < nu; ++n) midstep_.u[n] = s_.u[n] + c * (s_.u[n] - previous_.u[n]);
+#pragma omp parallel for schedule(static)
+    for (long n = 0; n < nw; ++n) midstep_.w[n] = s_.w[n] + c * (s_.w[n] - previous_.w[n]);
+  }
+  previous_.u = s_.u;
+  previous_.w = s_.w;
+  return have_previous ? midstep_ : s_;
+}
+
+void Solver::transport_increment(double dt, bool consistent) {
+  if (!params_.stress_bdf2 || increment_u_.empty()) return;
+  if (consistent)
+    consistent_transport(g_, s_, increment_u_, increment_w_, mass_fluxes_, props_.rho_u,
+                         props_.rho_w, dt, advection_faces_, transport_u_, transport_w_);
+  else if (params_.advect_momentum)
+    velocity_transport(g_, s_, increment_u_, increment_w_, advection_faces_, transport_u_,
+                       transport_w_);
+  else
+    return;
+  const long nu = long(increment_u_.size()), nw = long(increment_w_.size());
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nu; ++n) increment_u_[n] -= dt * transport_u_[n];
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nw; ++n) increment_w_[n] -= dt * transport_w_[n];
+}
+
+double Solver::bdf2_rescale_advection(double dt, double r) {
+  if (!params_.stress_bdf2) return dt;
+  const long nu = long(adv_u_.size()), nw = long(adv_w_.size());
+  advected_u_.resize(std::size_t(nu));
+  advected_w_.resize(std::size_t(nw));
+  // the advected velocity u~ = u^n - dt A, whatever the step's advection (zero without it)
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nu; ++n) advected_u_[n] = s_.u[n] - dt * adv_u_[n];
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nw; ++n) advected_w_[n] = s_.w[n] - dt * adv_w_[n];
+  // The first step, or a restart without the memory: backward Euler (a0 = 1, a2 = 0).
+  if (r <= 0.0 || increment_u_.size() != adv_u_.size() || increment_w_.size() != adv_w_.size())
+    return dt;
+  const double a0 = (1.0 + 2.0 * r) / (1.0 + r), a2 = r * r / (1.0 + r), c = a2 / dt;
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nu; ++n) adv_u_[n] = a0 * adv_u_[n] - c * increment_u_[n];
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nw; ++n) adv_w_[n] = a0 * adv_w_[n] - c * increment_w_[n];
+  return dt / a0;
+}
+
+void Solver::record_increment() {
+  const long nu = long(advected_u_.size()), nw = long(advected_w_.size());
+  increment_u_.resize(std::size_t(nu));
+  increment_w_.resize(std::size_t(nw));
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nu; ++n) increment_u_[n] = s_.u[n] - advected_u_[n];
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nw; ++n) increment_w_[n] = s_.w[n] - advected_w_[n];
 }
 
 void Solver::advance_to(double t_end) {

@@ -37,6 +37,10 @@ struct WarmStart {
   // The second-order step's memory: A^n (Adams-Bashforth) and the last step taken.
   std::vector<double> advection_u, advection_w;
   double previous_dt = 0.0;
+  // The BDF2 step's memory (stress_bdf2): the last step's non-advective velocity increment.
+  std::vector<double> increment_u, increment_w;
+  // u^{n-1} (interface_midstep_velocity)
+  std::vector<double> previous_u, previous_w;
 };
 
 struct RunStatistics {
@@ -77,6 +81,17 @@ class Solver {
 
  private:
   void check_health() const;
+  // The velocity that moves the interface this step (interface_midstep_velocity): u^n, or its
+  // mid-step extrapolation from u^n and u^{n-1}; keeps u^n for the next step.
+  const Fields& interface_velocity(double r);
+  // stress_bdf2: carry delta^n with the material over this step of dt (the departure points of
+  // the BDF2 step along the flow), by the momentum's own transport.
+  void transport_increment(double dt, bool consistent);
+  // stress_bdf2: keep u~ = u^n - dt A and fold a0, a2 into the advection; returns dt/a0, the
+  // step the predictor and the projection take (dt itself with backward Euler).
+  double bdf2_rescale_advection(double dt, double r);
+  // stress_bdf2: delta^{n+1} = u^{n+1} - u~ for the next step.
+  void record_increment();
 
   Grid g_;
   SolverParams params_;
@@ -98,6 +113,11 @@ class Solver {
   std::vector<double> p_eta_;    // the pressure eta is evaluated at (viscosity_pressure.hpp)
   std::vector<double> force_u_;  // surface-row pressure correction per u-face
   double dt_previous_ = 0.0;     // the last step taken (shortened or not)
+  // stress_bdf2: the advected velocity u~ of this step, and delta^n = u^n - u~^{n-1}, the last
+  // step's non-advective increment (empty before the first step)
+  std::vector<double> advected_u_, advected_w_, increment_u_, increment_w_;
+  std::vector<double> transport_u_, transport_w_;  // scratch: the transport of delta^n
+  Fields previous_, midstep_;  // u^{n-1} and the mid-step velocity (interface_midstep_velocity)
   RunStatistics stats_;
 };
 

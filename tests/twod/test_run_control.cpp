@@ -52,8 +52,8 @@ TEST(RunControl, RunawayVelocityIsReportedWithTimeAndPlace) {
   }
 }
 
-TEST(RunControl, CheckpointRestartContinuesIdentically) {
-  Case c;
+namespace {
+void expect_restart_continues_identically(const Case& c) {
   Solver a(c.grid, c.params, make_initial_state(c.grid, c.ic, c.params));
   a.advance_to(0.01);
   const std::string path =
@@ -76,6 +76,18 @@ TEST(RunControl, CheckpointRestartContinuesIdentically) {
   EXPECT_EQ(a.state().w, b.state().w);
   EXPECT_EQ(a.state().p, b.state().p);
   EXPECT_EQ(a.state().f, b.state().f);
+}
+}  // namespace
+
+TEST(RunControl, CheckpointRestartContinuesIdentically) {
+  expect_restart_continues_identically(Case{});
+}
+
+// The option that moves the interface with the mid-step velocity keeps u^{n-1} in the checkpoint.
+TEST(RunControl, CheckpointRestartContinuesIdenticallyWithTheMidStepInterfaceVelocity) {
+  Case c;
+  c.params.interface_midstep_velocity = true;
+  expect_restart_continues_identically(c);
 }
 
 // Output times every 3.3 steps or so: the step before each output time is never a sliver. The

@@ -8,9 +8,9 @@
 // the Bagnold flux (5.5) of the depth h0 within the O(dz^1.5) error of the steady-profile test at
 // this grid. With the default step, which gives the surface row the hydrostatic pressure force
 // on its grains (SolverParams::surface_row_pressure), the decay is at the exact 2D rate within
-// 15 % (measured -3.37 1/s), which the first test asserts; with the standard MAC force on that
-// row (the option off) it is -3.61 1/s (-4.24 with the former first-order step), and the second
-// test asserts only the relaxation.
+// 15 % (measured -3.35 1/s), which the first test asserts; with the standard MAC force on that
+// row (the option off) it is -3.51 1/s (-3.61 with the backward-Euler stress, -4.24 with the
+// former first-order step), and the second test asserts only the relaxation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -97,6 +97,9 @@ TEST(StableDecay, PerturbedLayerRelaxesToBagnoldAtTheExact2DRate) {
 TEST(StableDecay, WithTheStandardSurfaceRowForceTheLayerRelaxesToBagnold) {
   SolverParams params;
   params.surface_row_pressure = false;
-  const double rate = relax(params, 0.03);
+  // flat within the mode the exact 2D theory leaves at 1 s, as in the test above (with the BDF2
+  // step this option decays at -3.51 1/s, closer to the theory's -3.16 than the -3.61 of
+  // backward Euler, so more of the mode is left at 1 s: 3.1 % of a0 against 2.7 %)
+  const double rate = relax(params, 1.5 * std::exp(exact_2d_rate() * 1.0));
   EXPECT_LT(rate, 0.0);
 }

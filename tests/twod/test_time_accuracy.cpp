@@ -52,7 +52,57 @@ double box_decay_rate(double cfl, bool consistent_momentum) {
   for (std::size_t n = 0; n < amp.size(); ++n) ln[n] = std::log(std::abs(amp[n]));
   return fit_line(series.t, ln, 5, amp.size() - 1).slope;
 }
+
+// Mean flux at t = 0.04 s of a Newtonian layer (nu = 4e-5 m^2/s, h0 = 4 mm, 28.5 deg) released
+// from rest, at a fixed step dt. The flow is uniform in x, so the advection is zero and the time
+// error is that of the stress, pressure and gravity step alone; the spatial error is the same
+// for every dt and cancels in the differences.
+double startup_flux(double dt, bool bdf2) {
+  SolverParams params;
+  params.stress_bdf2 = bdf2;
+  params.zeta = degrees_to_radians(28.5);
+  params.cfl = 10.0;  // the step is set by dt_max alone
+  params.dt_max = dt;
+  params.dt_initial = dt;
+  const double h0 = 0.004, nu = 4e-5;
+  params.rheology.newtonian_eta = nu * params.rheology.material.bulk_density();
+  const Grid g(4, 32, 0.02, mid_cell_domain_height(h0, 32));
+  Solver solver(g, params, make_initial_state(g, layer_at_rest(h0), params));
+  solver.advance_to(0.04);
+  EXPECT_NEAR(solver.state().t, 0.04, 1e-12);
+  return mean_flux(g, solver.state());
+}
+
+// Observed order from the differences of three successive halvings.
+double observed_order(double coarse, double medium, double fine) {
+  return std::log2(std::abs(coarse - medium) / std::abs(medium - fine));
+}
 }  // namespace
+
+TEST(TimeAccuracy, Bdf2StepIsSecondOrderInTimeWhereBackwardEulerIsFirst) {
+  const std::vector<double> dts = {2e-3, 1e-3, 5e-4, 2.5e-4};
+  std::vector<double> bdf2, euler;
+  for (double dt : dts) {
+    bdf2.push_back(startup_flux(dt, true));
+    euler.push_back(startup_flux(dt, false));
+  }
+  vt::VerificationTable table(
+      "twod_time_order", "2D model: the default BDF2 step is second order in time",
+      "Mean flux at t = 0.04 s of a Newtonian layer (nu = 4e-5 m^2/s, h0 = 4 mm, 28.5 deg, "
+      "4 x 32 cells) released from rest, at four fixed steps; observed order from three "
+      "successive steps.",
+      {"dt [s]", "BDF2 flux [1e-3 m^2/s]", "backward Euler flux [1e-3 m^2/s]"});
+  for (std::size_t n = 0; n < dts.size(); ++n)
+    table.row({vt::sci(dts[n]), vt::fixed(1e3 * bdf2[n], 9), vt::fixed(1e3 * euler[n], 9)});
+  const double p_bdf2 = observed_order(bdf2[1], bdf2[2], bdf2[3]),
+               p_euler = observed_order(euler[1], euler[2], euler[3]);
+  table.row({"order", vt::fixed(p_bdf2, 2), vt::fixed(p_euler, 2)});
+  table.bound("BDF2 order >= 1.8 on both triples; backward Euler's below 1.2 (the contrast)");
+  EXPECT_GE(observed_order(bdf2[0], bdf2[1], bdf2[2]), 1.8);
+  EXPECT_GE(p_bdf2, 1.8);
+  EXPECT_LT(p_euler, 1.2);
+  table.write();
+}
 
 TEST(TimeAccuracy, SurfaceLayerWavelengthDecaysAtTheSameRateForEveryStep) {
   const double coarse = box_decay_rate(0.4, false), fine = box_decay_rate(0.1, false);

@@ -52,20 +52,24 @@ double inflow(double lower, double upper) {
 // read the arrays directly, elsewhere through the wrapped and clamped indices (the same values;
 // the direct reads save the index work). Each volume's value is the same arithmetic on the same
 // numbers as when every volume reconstructed its own four faces, at half the reconstructions.
-// The transported components qu, qw (laid out like u and w) are the velocity itself for the
-// momentum, or another field carried with it (the BDF2 step's memory, solver.cpp); the upwind
-// side and the time centring follow the velocity s.u, s.w either way.
-template <class Norm>
-void flux_form(const Grid& g, const Fields& s, const std::vector<double>& qu,
-               const std::vector<double>& qw, const std::vector<double>& cx,
-               const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
-               AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w) {
+// Besides the momentum (q = u, w), the pass can carry a second field laid out like u and w
+// (`carried`, the BDF2 step's memory in solver.cpp) with the same carriers, upwind sides and
+// time centring, at the cost of its reconstructions only. Its values are bitwise those of a
+// separate pass with q = that field.
+template <bool Carry, class Norm>
+void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& cx,
+                    const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
+                    AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w,
+                    const CarriedField& carried) {
   // Courant numbers of the time-centred face values (0: the plain upwind slope)
   const double cxr = dt_centre / g.dx, czr = dt_centre / g.dz;
   auto cx_of = [&](double V) { return std::abs(V) * cxr; };
   auto cz_of = [&](double V) { return std::abs(V) * czr; };
   const int nx = g.nx, nz = g.nz;
   const auto &u = s.u, &w = s.w;
+  // (for Carry = false the carried field's accessors read u and w and are never used)
+  const std::vector<double>& pu = Carry ? *carried.u : u;
+  const std::vector<double>& pw = Carry ? *carried.w : w;
   // every u-face and interior w-face is written below; the bed and top w-faces carry no
   // momentum (no serial fill of the whole arrays: the other threads would wait through it)
   adv_u.resize(g.cells());
@@ -73,6 +77,13 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& qu,
   for (int i = 0; i < nx; ++i) adv_w[g.at(i, 0)] = adv_w[g.at(i, nz)] = 0.0;
   for (auto* v : {&faces.ux_c, &faces.ux_f, &faces.wz_c, &faces.wz_f}) v->resize(g.cells());
   for (auto* v : {&faces.uz_c, &faces.uz_f, &faces.wx_c, &faces.wx_f}) v->resize(g.w_faces());
+  if constexpr (Carry) {
+    carried.adv_u->resize(g.cells());
+    carried.adv_w->resize(g.w_faces());
+    for (int i = 0; i < nx; ++i) (*carried.adv_w)[g.at(i, 0)] = (*carried.adv_w)[g.at(i, nz)] = 0.0;
+    for (auto* v : {&faces.ux_p, &faces.wz_p}) v->resize(g.cells());
+    for (auto* v : {&faces.uz_p, &faces.wx_p}) v->resize(g.w_faces());
+  }
   // Accessors: q(i, k) for the u-rows (clamped to 0..nz-1) and the w-rows (0..nz), periodic in i.
   auto wrapped = [&](const std::vector<double>& q, int top) {
     return [&q, &g, top](int i, int k) { return q[g.at(i, std::clamp(k, 0, top))]; };
@@ -80,56 +91,67 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& qu,
   auto direct = [nx](const std::vector<double>& q) {
     return [&q, nx](int i, int k) { return q[std::size_t(k) * nx + i]; };
   };
-  // Row k of faces: `body(i, k, U, W, QU, QW, CX, CZ)` with direct reads for i in [2, nx - 2)
-  // when `inside` (the stencil stays within the rows), wrapped and clamped reads elsewhere.
+  // Row k of faces: `body(i, k, U, W, PU, PW, CX, CZ)` (PU, PW: the carried field) with direct
+  // reads for i in [2, nx - 2) when `inside` (the stencil stays within the rows), wrapped and
+  // clamped reads elsewhere.
   auto row = [&](auto&& body, int k, bool inside) {
-    const auto Uw = wrapped(u, nz - 1), Ww = wrapped(w, nz), QUw = wrapped(qu, nz - 1),
-               QWw = wrapped(qw, nz), CXw = wrapped(cx, nz - 1), CZw = wrapped(cz, nz);
+    const auto Uw = wrapped(u, nz - 1), Ww = wrapped(w, nz), PUw = wrapped(pu, nz - 1),
+               PWw = wrapped(pw, nz), CXw = wrapped(cx, nz - 1), CZw = wrapped(cz, nz);
     if (!inside || nx <= 4) {
-      for (int i = 0; i < nx; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
+      for (int i = 0; i < nx; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
       return;
     }
-    const auto Ud = direct(u), Wd = direct(w), QUd = direct(qu), QWd = direct(qw), CXd = direct(cx),
+    const auto Ud = direct(u), Wd = direct(w), PUd = direct(pu), PWd = direct(pw), CXd = direct(cx),
                CZd = direct(cz);
-    for (int i = 0; i < 2; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
-    for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, QUd, QWd, CXd, CZd);
-    for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, QUw, QWw, CXw, CZw);
+    for (int i = 0; i < 2; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
+    for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, PUd, PWd, CXd, CZd);
+    for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
   };
   // The u-volumes' x-face at cell centre (i, k), between u-faces i and i + 1.
-  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& Q, auto&&, auto&& CX, auto&&) {
+  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& PU, auto&&, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k) + U(i + 1, k)), C = 0.5 * (CX(i, k) + CX(i + 1, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.ux_c[f] = C;
-    faces.ux_f[f] = C * upwind(V, Q(i - 1, k), Q(i, k), Q(i + 1, k), Q(i + 2, k), cx_of(V));
+    faces.ux_f[f] = C * upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V));
+    if constexpr (Carry)
+      faces.ux_p[f] = C * upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V));
   };
   // The u-volumes' z-face at corner (i, k), k = 0 .. nz: none through the bed; at the top q is
   // extended with zero gradient.
-  auto u_z_face = [&](int i, int k, auto&&, auto&& W, auto&& Q, auto&&, auto&&, auto&& CZ) {
+  auto u_z_face = [&](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&&, auto&& CZ) {
     const std::size_t f = std::size_t(k) * nx + i;
     if (k == 0) {
       faces.uz_c[f] = 0.0;
       faces.uz_f[f] = 0.0;
+      if constexpr (Carry) faces.uz_p[f] = 0.0;
       return;
     }
     const double V = 0.5 * (W(i - 1, k) + W(i, k)), C = 0.5 * (CZ(i - 1, k) + CZ(i, k));
-    const double q =
-        k == nz ? Q(i, k - 1) : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
+    auto face_value = [&](auto&& Q) {
+      return k == nz ? Q(i, k - 1)
+                     : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
+    };
     faces.uz_c[f] = C;
-    faces.uz_f[f] = C * q;
+    faces.uz_f[f] = C * face_value(U);
+    if constexpr (Carry) faces.uz_p[f] = C * face_value(PU);
   };
   // The w-volumes' x-face at corner (i, k), k = 1 .. nz - 1.
-  auto w_x_face = [&](int i, int k, auto&& U, auto&&, auto&&, auto&& Q, auto&& CX, auto&&) {
+  auto w_x_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k - 1) + U(i, k)), C = 0.5 * (CX(i, k - 1) + CX(i, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wx_c[f] = C;
-    faces.wx_f[f] = C * upwind(V, Q(i - 2, k), Q(i - 1, k), Q(i, k), Q(i + 1, k), cx_of(V));
+    faces.wx_f[f] = C * upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V));
+    if constexpr (Carry)
+      faces.wx_p[f] = C * upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V));
   };
   // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
-  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& Q, auto&&, auto&& CZ) {
+  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
     const double V = 0.5 * (W(i, k) + W(i, k + 1)), C = 0.5 * (CZ(i, k) + CZ(i, k + 1));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wz_c[f] = C;
-    faces.wz_f[f] = C * upwind(V, Q(i, k - 1), Q(i, k), Q(i, k + 1), Q(i, k + 2), cz_of(V));
+    faces.wz_f[f] = C * upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V));
+    if constexpr (Carry)
+      faces.wz_p[f] = C * upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V));
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
 #pragma omp parallel for schedule(static)
@@ -142,44 +164,64 @@ void flux_form(const Grid& g, const Fields& s, const std::vector<double>& qu,
   // The volumes, from their faces (left/right, bottom/top).
   // (multiplied by the inverse spacings: six divisions per volume were most of this pass's time)
   const double idx = 1.0 / g.dx, idz = 1.0 / g.dz;
-  auto volume = [&](double Cl, double Cr, double Fl, double Fr, double Cb, double Ct, double Fb,
-                    double Ft, double q, std::size_t c, auto&& norm) {
+  // the volume's carrier divergence and normalisation, shared by the momentum and the carried
+  // field: (flux - q div) / norm
+  struct Balance {
+    double div, norm;
+  };
+  auto balance = [&](double Cl, double Cr, double Cb, double Ct, std::size_t c, auto&& norm) {
     const double div = (Cr - Cl) * idx + (Ct - Cb) * idz;
-    const double flux = (Fr - Fl) * idx + (Ft - Fb) * idz;
     const double in = inflow(Cl, Cr) * idx + inflow(Cb, Ct) * idz;
-    return (flux - q * div) / norm(c, div, in);
+    return Balance{div, norm(c, div, in)};
+  };
+  auto value = [&](const Balance& b, double Fl, double Fr, double Fb, double Ft, double q) {
+    const double flux = (Fr - Fl) * idx + (Ft - Fb) * idz;
+    return (flux - q * b.div) / b.norm;
   };
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = std::size_t(k) * nx + i,
                         l = std::size_t(k) * nx + (i == 0 ? nx - 1 : i - 1);
-      adv_u[c] = volume(faces.ux_c[l], faces.ux_c[c], faces.ux_f[l], faces.ux_f[c], faces.uz_c[c],
-                        faces.uz_c[c + nx], faces.uz_f[c], faces.uz_f[c + nx], qu[c], c, norm_u);
+      const Balance b =
+          balance(faces.ux_c[l], faces.ux_c[c], faces.uz_c[c], faces.uz_c[c + nx], c, norm_u);
+      adv_u[c] = value(b, faces.ux_f[l], faces.ux_f[c], faces.uz_f[c], faces.uz_f[c + nx], u[c]);
+      if constexpr (Carry)
+        (*carried.adv_u)[c] =
+            value(b, faces.ux_p[l], faces.ux_p[c], faces.uz_p[c], faces.uz_p[c + nx], pu[c]);
     }
 #pragma omp parallel for schedule(static)
   for (int k = 1; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = std::size_t(k) * nx + i,
                         r = std::size_t(k) * nx + (i == nx - 1 ? 0 : i + 1);
-      adv_w[c] =
-          volume(faces.wx_c[c], faces.wx_c[r], faces.wx_f[c], faces.wx_f[r], faces.wz_c[c - nx],
-                 faces.wz_c[c], faces.wz_f[c - nx], faces.wz_f[c], qw[c], c, norm_w);
+      const Balance b =
+          balance(faces.wx_c[c], faces.wx_c[r], faces.wz_c[c - nx], faces.wz_c[c], c, norm_w);
+      adv_w[c] = value(b, faces.wx_f[c], faces.wx_f[r], faces.wz_f[c - nx], faces.wz_f[c], w[c]);
+      if constexpr (Carry)
+        (*carried.adv_w)[c] =
+            value(b, faces.wx_p[c], faces.wx_p[r], faces.wz_p[c - nx], faces.wz_p[c], pw[c]);
     }
+}
+
+// The flux form with or without a carried field.
+template <class Norm>
+void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
+               const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
+               AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w,
+               const CarriedField& carried) {
+  if (carried.u)
+    flux_form_pass<true>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried);
+  else
+    flux_form_pass<false>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried);
 }
 }  // namespace
 
 void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
-                        std::vector<double>& adv_u, std::vector<double>& adv_w) {
+                        std::vector<double>& adv_u, std::vector<double>& adv_w,
+                        const CarriedField& carried) {
   auto unit = [](std::size_t, double, double) { return 1.0; };
-  flux_form(g, s, s.u, s.w, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
-}
-
-void velocity_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
-                        const std::vector<double>& qw, AdvectionFaces& faces,
-                        std::vector<double>& adv_u, std::vector<double>& adv_w) {
-  auto unit = [](std::size_t, double, double) { return 1.0; };
-  flux_form(g, s, qu, qw, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w);
+  flux_form(g, s, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w, carried);
 }
 
 void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
@@ -194,11 +236,11 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
   for (long c = 0; c < nz; ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
 }
 
-void consistent_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
-                          const std::vector<double>& qw, const MassFluxes& m,
-                          const std::vector<double>& rho_u, const std::vector<double>& rho_w,
-                          double dt, AdvectionFaces& faces, std::vector<double>& adv_u,
-                          std::vector<double>& adv_w) {
+void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
+                                   const std::vector<double>& rho_u,
+                                   const std::vector<double>& rho_w, double dt,
+                                   AdvectionFaces& faces, std::vector<double>& adv_u,
+                                   std::vector<double>& adv_w, const CarriedField& carried) {
   // rho_new = rho^n - dt div(G): the density that the same mass fluxes leave in the control
   // volume, so that the update of rho u is a weighted mean of u^n and the incoming u's. The
   // staggered volume's fluxes are averages of the cells' fluxes, not a partition of its own
@@ -210,16 +252,8 @@ void consistent_transport(const Grid& g, const Fields& s, const std::vector<doub
       return std::max({rho[c] - dt * div, rho[c], dt * in});
     };
   };
-  flux_form(g, s, qu, qw, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u,
-            adv_w);
-}
-
-void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,
-                                   const std::vector<double>& rho_u,
-                                   const std::vector<double>& rho_w, double dt,
-                                   AdvectionFaces& faces, std::vector<double>& adv_u,
-                                   std::vector<double>& adv_w) {
-  consistent_transport(g, s, s.u, s.w, m, rho_u, rho_w, dt, faces, adv_u, adv_w);
+  flux_form(g, s, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u, adv_w,
+            carried);
 }
 
 }  // namespace granbench::twod

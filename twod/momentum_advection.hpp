@@ -18,18 +18,24 @@ struct AdvectionFaces {
   std::vector<double> uz_c, uz_f;  // u-volumes' z-faces, at corners (i, k), k = 0 .. nz
   std::vector<double> wx_c, wx_f;  // w-volumes' x-faces, at corners (i, k), k = 1 .. nz - 1 used
   std::vector<double> wz_c, wz_f;  // w-volumes' z-faces, at cell centres (i, k)
+  std::vector<double> ux_p, uz_p, wx_p, wz_p;  // the same faces' fluxes of a carried field
+};
+
+// A field laid out like u and w that the advection carries along with the momentum, by the same
+// carriers, upwind sides and time centring (the BDF2 step's memory, solver.cpp): its transport
+// term goes to adv_u, adv_w, so that (u - dt adv_u, w - dt adv_w) is the field moved over the
+// step with the material. u == nullptr: none.
+struct CarriedField {
+  const std::vector<double>* u = nullptr;
+  const std::vector<double>* w = nullptr;
+  std::vector<double>* adv_u = nullptr;
+  std::vector<double>* adv_w = nullptr;
 };
 
 // adv_u at every u-face, adv_w at the interior w-faces (k = 1 .. nz-1; others left 0).
 void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
-                        std::vector<double>& adv_u, std::vector<double>& adv_w);
-
-// (u . grad) q for another field (qu, qw) laid out like u and w, by the same flux form as
-// momentum_advection (which is this with q = u): the velocity form's transport of the BDF2
-// step's memory (solver.cpp).
-void velocity_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
-                        const std::vector<double>& qw, AdvectionFaces& faces,
-                        std::vector<double>& adv_u, std::vector<double>& adv_w);
+                        std::vector<double>& adv_u, std::vector<double>& adv_w,
+                        const CarriedField& carried = {});
 
 // Mass fluxes through the cell faces over one step [kg m^-2 s^-1]: x at x-face (i, k), z at
 // z-face (i, k) (nz + 1 rows).
@@ -51,16 +57,6 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
                                    const std::vector<double>& rho_u,
                                    const std::vector<double>& rho_w, double dt,
                                    AdvectionFaces& faces, std::vector<double>& adv_u,
-                                   std::vector<double>& adv_w);
-
-// The same transport for another field (qu, qw) carried with the grains and the light fluid by
-// the mass fluxes m, upwinded and time-centred by the velocity of s: (qu - dt adv_u, qw - dt
-// adv_w) is that field moved over the step with the mass. The BDF2 step carries its memory,
-// the last step's velocity increment, this way (solver.cpp).
-void consistent_transport(const Grid& g, const Fields& s, const std::vector<double>& qu,
-                          const std::vector<double>& qw, const MassFluxes& m,
-                          const std::vector<double>& rho_u, const std::vector<double>& rho_w,
-                          double dt, AdvectionFaces& faces, std::vector<double>& adv_u,
-                          std::vector<double>& adv_w);
+                                   std::vector<double>& adv_w, const CarriedField& carried = {});
 
 }  // namespace granbench::twod

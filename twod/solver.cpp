@@ -138,10 +138,8 @@ double Solver::step(double dt_limit) {
                  rho_l = params_.rheology.rho_light;
     mass_fluxes(g_, carrier, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
     consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt,
-                                  advection_faces_, adv_cons_u_, adv_cons_w_);
+                                  advection_faces_, adv_cons_u_, adv_cons_w_, carried_increment());
   }
-  // the BDF2 memory moves with the material over the step (before step 2: level-n densities)
-  transport_increment(dt, consistent);
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
@@ -162,7 +160,7 @@ double Solver::step(double dt_limit) {
     adv_u_.swap(adv_cons_u_);
     adv_w_.swap(adv_cons_w_);
   } else if (params_.advect_momentum) {
-    momentum_advection(g_, s_, advection_faces_, adv_u_, adv_w_);
+    momentum_advection(g_, s_, advection_faces_, adv_u_, adv_w_, carried_increment());
     if (params_.advection_ab2) {
       const bool have_old = !adv_u_old_.empty() && r > 0.0;
       adv_u_old_.swap(adv_u_);  // adv_u_old_ = A^n, adv_u_ = A^{n-1}
@@ -184,6 +182,8 @@ double Solver::step(double dt_limit) {
     adv_u_.assign(g_.cells(), 0.0);
     adv_w_.assign(g_.w_faces(), 0.0);
   }
+  // the BDF2 memory, carried by the advection above, moves with the material over the step
+  move_increment(dt);
   // BDF2 for the non-advective part (stress_bdf2): the predictor and projection take the step
   // dt/a0 from u^n with the advection a0 A - (a2/dt) delta^n, so that their sum is
   // u^{n+1} = u~ + (dt/a0) F^{n+1} + (a2/a0) delta^n with u~ = u^n - dt A.
@@ -234,16 +234,13 @@ const Fields& Solver::interface_velocity(double r) {
   return have_previous ? midstep_ : s_;
 }
 
-void Solver::transport_increment(double dt, bool consistent) {
-  if (!params_.stress_bdf2 || increment_u_.empty()) return;
-  if (consistent)
-    consistent_transport(g_, s_, increment_u_, increment_w_, mass_fluxes_, props_.rho_u,
-                         props_.rho_w, dt, advection_faces_, transport_u_, transport_w_);
-  else if (params_.advect_momentum)
-    velocity_transport(g_, s_, increment_u_, increment_w_, advection_faces_, transport_u_,
-                       transport_w_);
-  else
-    return;
+CarriedField Solver::carried_increment() {
+  if (!params_.stress_bdf2 || increment_u_.empty() || !params_.advect_momentum) return {};
+  return {&increment_u_, &increment_w_, &transport_u_, &transport_w_};
+}
+
+void Solver::move_increment(double dt) {
+  if (!carried_increment().u) return;
   const long nu = long(increment_u_.size()), nw = long(increment_w_.size());
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < nu; ++n) increment_u_[n] -= dt * transport_u_[n];

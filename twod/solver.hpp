@@ -84,9 +84,11 @@ class Solver {
   // The velocity that moves the interface this step (interface_midstep_velocity): u^n, or its
   // mid-step extrapolation from u^n and u^{n-1}; keeps u^n for the next step.
   const Fields& interface_velocity(double r);
-  // stress_bdf2: carry delta^n with the material over this step of dt (the departure points of
-  // the BDF2 step along the flow), by the momentum's own transport.
-  void transport_increment(double dt, bool consistent);
+  // stress_bdf2: delta^n for the advection to carry with the material over this step (the
+  // departure points of the BDF2 step along the flow; none before the first step), and the
+  // update delta^n -= dt (its transport term) once the advection has run.
+  CarriedField carried_increment();
+  void move_increment(double dt);
   // stress_bdf2: keep u~ = u^n - dt A and fold a0, a2 into the advection; returns dt/a0, the
   // step the predictor and the projection take (dt itself with backward Euler).
   double bdf2_rescale_advection(double dt, double r);

@@ -9,14 +9,18 @@
 //
 //   f^{n+1}          = VOF(f^n, u^n, dt)                   split PLIC, Weymouth-Yue
 //   rho^{n+1}, eta   = properties(f^{n+1}, u^n, p*)        p* = p^n + hydrostatic change h^n ->
-//   h^{n+1} u*               : rho^{n+1}(a0 u* - a0 u~ - a2 delta^n)/dt = div(tau^{n+1}) - grad p^n
+//   h^{n+1} u*               : rho^{n+1}(a0 u* - a0 u~ - a2 delta~^n)/dt = div(tau^{n+1}) - grad
+//   p^n
 //                                               + rho^{n+1} g,      u~ = u^n - dt A^{n+1/2}
 //   dp               : div(grad dp / rho^{n+1}) = a0 div u* / dt
 //   u^{n+1} = u* - (dt/a0) grad dp / rho^{n+1},   p^{n+1} = p^n + dp
 //
 // The non-advective part (stress, pressure, gravity) is integrated by BDF2 written on the
-// increment (stress_bdf2): with the last step's increment delta^n = u^n - u~^{n-1} and r =
-// dt_n/dt_{n-1}, a0 = (1+2r)/(1+r), a2 = r^2/(1+r), the variable-step BDF2 coefficients (a0 = 1,
+// increment (stress_bdf2): with the last step's increment delta^n = u^n - u~^{n-1}, carried over
+// the step with the material by the momentum's own transport (delta~^n: the value at the
+// departure point, as BDF2 along the flow needs; left on the grid, a face that held light fluid
+// would give arriving grains the light fluid's increment), r = dt_n/dt_{n-1} and
+// a0 = (1+2r)/(1+r), a2 = r^2/(1+r), the variable-step BDF2 coefficients (a0 = 1,
 // a2 = 0 on the first step: backward Euler). Since a0 - (1+r) + a2 = 0, this is BDF2 for the whole
 // velocity with the advection kept as the time-centred increment u~ - u^n; the recursion makes
 // delta^{n+1} = dt F(t_{n+1/2}) + O(dt^3), so the step is second order. In the standard
@@ -182,11 +186,10 @@ double Solver::step(double dt_limit) {
     adv_u_.assign(g_.cells(), 0.0);
     adv_w_.assign(g_.w_faces(), 0.0);
   }
-  // the BDF2 memory, carried by the advection above, moves with the material over the step
-  move_increment(dt);
   // BDF2 for the non-advective part (stress_bdf2): the predictor and projection take the step
-  // dt/a0 from u^n with the advection a0 A - (a2/dt) delta^n, so that their sum is
-  // u^{n+1} = u~ + (dt/a0) F^{n+1} + (a2/a0) delta^n with u~ = u^n - dt A.
+  // dt/a0 from u^n with the advection a0 A - (a2/dt) delta~^n, so that their sum is
+  // u^{n+1} = u~ + (dt/a0) F^{n+1} + (a2/a0) delta~^n with u~ = u^n - dt A, and delta~^n the
+  // memory carried by the advection above with the material over the step.
   const double dt_f = bdf2_rescale_advection(dt, r);
   stats_.viscous_iterations +=
       viscous_.predict(s_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_);
@@ -239,33 +242,46 @@ CarriedField Solver::carried_increment() {
   return {&increment_u_, &increment_w_, &transport_u_, &transport_w_};
 }
 
-void Solver::move_increment(double dt) {
-  if (!carried_increment().u) return;
-  const long nu = long(increment_u_.size()), nw = long(increment_w_.size());
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < nu; ++n) increment_u_[n] -= dt * transport_u_[n];
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < nw; ++n) increment_w_[n] -= dt * transport_w_[n];
-}
-
 double Solver::bdf2_rescale_advection(double dt, double r) {
   if (!params_.stress_bdf2) return dt;
   const long nu = long(adv_u_.size()), nw = long(adv_w_.size());
   advected_u_.resize(std::size_t(nu));
   advected_w_.resize(std::size_t(nw));
-  // the advected velocity u~ = u^n - dt A, whatever the step's advection (zero without it)
+  // The first step, or a restart without the memory: backward Euler (a0 = 1, a2 = 0), and only
+  // the advected velocity u~ = u^n - dt A (whatever the step's advection; zero without it).
+  if (r <= 0.0 || increment_u_.size() != adv_u_.size() || increment_w_.size() != adv_w_.size()) {
 #pragma omp parallel for schedule(static)
-  for (long n = 0; n < nu; ++n) advected_u_[n] = s_.u[n] - dt * adv_u_[n];
+    for (long n = 0; n < nu; ++n) advected_u_[n] = s_.u[n] - dt * adv_u_[n];
 #pragma omp parallel for schedule(static)
-  for (long n = 0; n < nw; ++n) advected_w_[n] = s_.w[n] - dt * adv_w_[n];
-  // The first step, or a restart without the memory: backward Euler (a0 = 1, a2 = 0).
-  if (r <= 0.0 || increment_u_.size() != adv_u_.size() || increment_w_.size() != adv_w_.size())
+    for (long n = 0; n < nw; ++n) advected_w_[n] = s_.w[n] - dt * adv_w_[n];
     return dt;
+  }
   const double a0 = (1.0 + 2.0 * r) / (1.0 + r), a2 = r * r / (1.0 + r), c = a2 / dt;
+  // u~, the carried memory delta~ = delta - dt (its transport term) when the advection carried
+  // it, and a0 A - c delta~, in one pass over each array
+  auto fold = [&](std::vector<double>& adv, const std::vector<double>& vel,
+                  const std::vector<double>& increment, const std::vector<double>& transport,
+                  std::vector<double>& advected, bool carried) {
+    const long size = long(adv.size());
+    if (carried) {
 #pragma omp parallel for schedule(static)
-  for (long n = 0; n < nu; ++n) adv_u_[n] = a0 * adv_u_[n] - c * increment_u_[n];
+      for (long n = 0; n < size; ++n) {
+        const double a = adv[n];
+        advected[n] = vel[n] - dt * a;
+        adv[n] = a0 * a - c * (increment[n] - dt * transport[n]);
+      }
+    } else {
 #pragma omp parallel for schedule(static)
-  for (long n = 0; n < nw; ++n) adv_w_[n] = a0 * adv_w_[n] - c * increment_w_[n];
+      for (long n = 0; n < size; ++n) {
+        const double a = adv[n];
+        advected[n] = vel[n] - dt * a;
+        adv[n] = a0 * a - c * increment[n];
+      }
+    }
+  };
+  const bool carried = carried_increment().u != nullptr;
+  fold(adv_u_, s_.u, increment_u_, transport_u_, advected_u_, carried);
+  fold(adv_w_, s_.w, increment_w_, transport_w_, advected_w_, carried);
   return dt / a0;
 }
 

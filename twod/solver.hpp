@@ -85,12 +85,12 @@ class Solver {
   // mid-step extrapolation from u^n and u^{n-1}; keeps u^n for the next step.
   const Fields& interface_velocity(double r);
   // stress_bdf2: delta^n for the advection to carry with the material over this step (the
-  // departure points of the BDF2 step along the flow; none before the first step), and the
-  // update delta^n -= dt (its transport term) once the advection has run.
+  // departure points of the BDF2 step along the flow; none before the first step). Its
+  // transport term lands in transport_u_, transport_w_.
   CarriedField carried_increment();
-  void move_increment(double dt);
-  // stress_bdf2: keep u~ = u^n - dt A and fold a0, a2 into the advection; returns dt/a0, the
-  // step the predictor and the projection take (dt itself with backward Euler).
+  // stress_bdf2: keep u~ = u^n - dt A, move the carried memory and fold a0, a2 into the
+  // advection; returns dt/a0, the step the predictor and the projection take (dt itself with
+  // backward Euler).
   double bdf2_rescale_advection(double dt, double r);
   // stress_bdf2: delta^{n+1} = u^{n+1} - u~ for the next step.
   void record_increment();

@@ -10,7 +10,15 @@
 // The consistent form (the solver's default) carries q with the mass fluxes G of the step's VOF
 // advection instead of the velocity:  A = [div(G q) - q div(G)] / (rho^n - dt div(G)),  so that
 // rho^{n+1} (u^n - dt A) = rho^n u^n - dt div(G q): the discrete momentum balance of the mass
-// that the VOF step moved (Rudman 1997; Arrufat et al. 2021 on staggered grids).
+// that the VOF step moved (Rudman 1997; Arrufat et al. 2021 on staggered grids). Its face values
+// are centred in time: along the face's normal by the MUSCL-Hancock slope (upwind() below) and,
+// with the transverse terms (SolverParams::advection_transverse_terms, the default), across it:
+//   q_face = q_up + (1 - c)/2 dq_normal - (dt/2) V_t (dq/dt_t)_up  (donor-cell difference),
+// V_t the velocity along the face at the upwind point (Colella 1990's corner transport, the
+// transverse part of Bell, Colella & Glaz 1989's face values, without their force term: that
+// term, approximated from the BDF2 memory, moved the 2 cm slow wave away from its limit).
+// Without the transverse part the face value lags half a step in the direction along the face,
+// a first-order error that travels with the wave over the grid (docs/twod-validation.md §10).
 // Boundaries: no flux through the bed; at the top q is extended with zero gradient.
 #include "twod/momentum_advection.hpp"
 
@@ -60,13 +68,23 @@ template <bool Carry, class Norm>
 void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& cx,
                     const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
                     AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w,
-                    const CarriedField& carried) {
+                    const CarriedField& carried, bool transverse_terms) {
   // Courant numbers of the time-centred face values (0: the plain upwind slope)
   const double cxr = dt_centre / g.dx, czr = dt_centre / g.dz;
   auto cx_of = [&](double V) { return std::abs(V) * cxr; };
   auto cz_of = [&](double V) { return std::abs(V) * czr; };
   const int nx = g.nx, nz = g.nz;
   const auto &u = s.u, &w = s.w;
+  // The transverse terms: half a step of the transport along the face, -(dt/2) V_t dq/dt_t, with
+  // V_t the velocity along the face at the upwind point and dq/dt_t the upwind difference along
+  // V_t there (donor cell, as Colella's corner transport: the centred difference let a light
+  // fluid ten times lighter than the default oscillate and diverge within 0.55 s of the
+  // rollwave; rows clamped at the bed and top).
+  const double half_dt = transverse_terms ? 0.5 * dt_centre : 0.0;
+  const double idx_t = 1.0 / g.dx, idz_t = 1.0 / g.dz;
+  auto donor = [](double V, double behind, double here, double ahead, double inv_h) {
+    return (V >= 0.0 ? here - behind : ahead - here) * inv_h;
+  };
   // (for Carry = false the carried field's accessors read u and w and are never used)
   const std::vector<double>& pu = Carry ? *carried.u : u;
   const std::vector<double>& pw = Carry ? *carried.w : w;
@@ -108,13 +126,22 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
   };
   // The u-volumes' x-face at cell centre (i, k), between u-faces i and i + 1.
-  auto u_x_face = [&](int i, int k, auto&& U, auto&&, auto&& PU, auto&&, auto&& CX, auto&&) {
+  auto u_x_face = [&](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k) + U(i + 1, k)), C = 0.5 * (CX(i, k) + CX(i + 1, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.ux_c[f] = C;
-    faces.ux_f[f] = C * upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V));
+    double tq = 0.0, tp = 0.0;
+    if (half_dt > 0.0) {
+      const int iu = V >= 0.0 ? i : i + 1;
+      const double Wt = 0.25 * (W(iu - 1, k) + W(iu, k) + W(iu - 1, k + 1) + W(iu, k + 1));
+      tq = half_dt * Wt * donor(Wt, U(iu, k - 1), U(iu, k), U(iu, k + 1), idz_t);
+      if constexpr (Carry)
+        tp = half_dt * Wt * donor(Wt, PU(iu, k - 1), PU(iu, k), PU(iu, k + 1), idz_t);
+    }
+    faces.ux_f[f] = C * (upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      faces.ux_p[f] = C * upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V));
+      faces.ux_p[f] =
+          C * (upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V)) - tp);
   };
   // The u-volumes' z-face at corner (i, k), k = 0 .. nz: none through the bed; at the top q is
   // extended with zero gradient.
@@ -131,32 +158,58 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
       return k == nz ? Q(i, k - 1)
                      : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
     };
+    double tq = 0.0, tp = 0.0;
+    if (half_dt > 0.0 && k < nz) {
+      const int ku = V >= 0.0 ? k - 1 : k;
+      const double Ut = U(i, ku);
+      tq = half_dt * Ut * donor(Ut, U(i - 1, ku), U(i, ku), U(i + 1, ku), idx_t);
+      if constexpr (Carry)
+        tp = half_dt * Ut * donor(Ut, PU(i - 1, ku), PU(i, ku), PU(i + 1, ku), idx_t);
+    }
     faces.uz_c[f] = C;
-    faces.uz_f[f] = C * face_value(U);
-    if constexpr (Carry) faces.uz_p[f] = C * face_value(PU);
+    faces.uz_f[f] = C * (face_value(U) - tq);
+    if constexpr (Carry) faces.uz_p[f] = C * (face_value(PU) - tp);
   };
   // The w-volumes' x-face at corner (i, k), k = 1 .. nz - 1.
   auto w_x_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k - 1) + U(i, k)), C = 0.5 * (CX(i, k - 1) + CX(i, k));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wx_c[f] = C;
-    faces.wx_f[f] = C * upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V));
+    double tq = 0.0, tp = 0.0;
+    if (half_dt > 0.0) {
+      const int iu = V >= 0.0 ? i - 1 : i;
+      const double Wt = W(iu, k);
+      tq = half_dt * Wt * donor(Wt, W(iu, k - 1), W(iu, k), W(iu, k + 1), idz_t);
+      if constexpr (Carry)
+        tp = half_dt * Wt * donor(Wt, PW(iu, k - 1), PW(iu, k), PW(iu, k + 1), idz_t);
+    }
+    faces.wx_f[f] = C * (upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      faces.wx_p[f] = C * upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V));
+      faces.wx_p[f] =
+          C * (upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V)) - tp);
   };
   // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
-  auto w_z_face = [&](int i, int k, auto&&, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
+  auto w_z_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
     const double V = 0.5 * (W(i, k) + W(i, k + 1)), C = 0.5 * (CZ(i, k) + CZ(i, k + 1));
     const std::size_t f = std::size_t(k) * nx + i;
     faces.wz_c[f] = C;
-    faces.wz_f[f] = C * upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V));
+    double tq = 0.0, tp = 0.0;
+    if (half_dt > 0.0) {
+      const int ku = V >= 0.0 ? k : k + 1;
+      const double Ut = 0.25 * (U(i, ku - 1) + U(i + 1, ku - 1) + U(i, ku) + U(i + 1, ku));
+      tq = half_dt * Ut * donor(Ut, W(i - 1, ku), W(i, ku), W(i + 1, ku), idx_t);
+      if constexpr (Carry)
+        tp = half_dt * Ut * donor(Ut, PW(i - 1, ku), PW(i, ku), PW(i + 1, ku), idx_t);
+    }
+    faces.wz_f[f] = C * (upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
     if constexpr (Carry)
-      faces.wz_p[f] = C * upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V));
+      faces.wz_p[f] =
+          C * (upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
 #pragma omp parallel for schedule(static)
   for (int k = 0; k <= nz; ++k) {
-    if (k < nz) row(u_x_face, k, true);
+    if (k < nz) row(u_x_face, k, k >= 1 && k + 1 < nz);  // (the transverse reads k +- 1)
     row(u_z_face, k, k >= 2 && k + 1 <= nz - 1);
     if (k > 0 && k < nz) row(w_x_face, k, true);
     if (k < nz) row(w_z_face, k, k >= 1 && k + 2 <= nz);
@@ -209,11 +262,13 @@ template <class Norm>
 void flux_form(const Grid& g, const Fields& s, const std::vector<double>& cx,
                const std::vector<double>& cz, Norm&& norm_u, Norm&& norm_w, double dt_centre,
                AdvectionFaces& faces, std::vector<double>& adv_u, std::vector<double>& adv_w,
-               const CarriedField& carried) {
+               const CarriedField& carried, bool transverse_terms) {
   if (carried.u)
-    flux_form_pass<true>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried);
+    flux_form_pass<true>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried,
+                         transverse_terms);
   else
-    flux_form_pass<false>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried);
+    flux_form_pass<false>(g, s, cx, cz, norm_u, norm_w, dt_centre, faces, adv_u, adv_w, carried,
+                          transverse_terms);
 }
 }  // namespace
 
@@ -221,7 +276,7 @@ void momentum_advection(const Grid& g, const Fields& s, AdvectionFaces& faces,
                         std::vector<double>& adv_u, std::vector<double>& adv_w,
                         const CarriedField& carried) {
   auto unit = [](std::size_t, double, double) { return 1.0; };
-  flux_form(g, s, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w, carried);
+  flux_form(g, s, s.u, s.w, unit, unit, 0.0, faces, adv_u, adv_w, carried, false);
 }
 
 void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
@@ -240,7 +295,8 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
                                    const std::vector<double>& rho_u,
                                    const std::vector<double>& rho_w, double dt,
                                    AdvectionFaces& faces, std::vector<double>& adv_u,
-                                   std::vector<double>& adv_w, const CarriedField& carried) {
+                                   std::vector<double>& adv_w, const CarriedField& carried,
+                                   bool transverse_terms) {
   // rho_new = rho^n - dt div(G): the density that the same mass fluxes leave in the control
   // volume, so that the update of rho u is a weighted mean of u^n and the incoming u's. The
   // staggered volume's fluxes are averages of the cells' fluxes, not a partition of its own
@@ -253,7 +309,7 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
     };
   };
   flux_form(g, s, m.x, m.z, new_density(rho_u), new_density(rho_w), dt, faces, adv_u, adv_w,
-            carried);
+            carried, transverse_terms);
 }
 
 }  // namespace granbench::twod

@@ -48,7 +48,8 @@ struct MassFluxes {
 void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, double rho_g,
                  double rho_l, double dt, MassFluxes& m);
 
-// The same operator with the mass fluxes m as carriers, normalised by the density that these
+// The same operator with the mass fluxes m as carriers, its face values centred in time (along
+// the face's normal and, with transverse_terms, across it), normalised by the density that these
 // fluxes leave in each control volume, rho^n - dt div(m) (rho_u, rho_w: the face densities at
 // level n). In a region of one density it equals momentum_advection's value to O(dt div u); across
 // the interface it carries momentum with the mass that the VOF step moves, so a parcel of grains
@@ -57,6 +58,7 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
                                    const std::vector<double>& rho_u,
                                    const std::vector<double>& rho_w, double dt,
                                    AdvectionFaces& faces, std::vector<double>& adv_u,
-                                   std::vector<double>& adv_w, const CarriedField& carried = {});
+                                   std::vector<double>& adv_w, const CarriedField& carried = {},
+                                   bool transverse_terms = true);
 
 }  // namespace granbench::twod

@@ -135,6 +135,14 @@ struct SolverParams {
   // light fluid's updraft to the open top, and the run diverges there (docs/twod-validation.md
   // §8); on the linear §7 check the two differ by 0.1-0.2 %.
   bool consistent_momentum = true;
+  // The consistent transport's face values centred in time across the face too (true, default):
+  // each face value also moves by -(dt/2) V_t dq/dt_t, the transport along the face by the
+  // velocity there (the transverse term of Colella's corner transport and of Bell, Colella &
+  // Glaz's face values; momentum_advection.cpp). Without it the face values lag by half a step in
+  // the other direction, a first-order error that travels with the wave over the grid: the
+  // section 7 growth moved by 0.0065 and 0.0034 per halving of the step (cfl 0.4 to 0.1), with it
+  // by 0.0024 and 0.0011 (docs/twod-validation.md §10).
+  bool advection_transverse_terms = true;
   bool advect_interface = true;
   // OpenMP threads of the solver's loops (parallel.hpp); results do not depend on it. The
   // default is the thread count of the thread that makes these parameters (OMP_NUM_THREADS, or

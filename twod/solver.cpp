@@ -142,7 +142,8 @@ double Solver::step(double dt_limit) {
                  rho_l = params_.rheology.rho_light;
     mass_fluxes(g_, carrier, grain_fluxes_, rho_g, rho_l, dt, mass_fluxes_);
     consistent_momentum_advection(g_, s_, mass_fluxes_, props_.rho_u, props_.rho_w, dt,
-                                  advection_faces_, adv_cons_u_, adv_cons_w_, carried_increment());
+                                  advection_faces_, adv_cons_u_, adv_cons_w_, carried_increment(),
+                                  params_.advection_transverse_terms);
   }
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the

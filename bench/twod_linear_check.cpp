@@ -17,7 +17,7 @@
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
 //     frame=0 (grid speed / base surface speed) vtol=1e-8 ptol=1e-10 (viscous, projection)
-//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=0
+//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=1
 //     interface_p=cell|extrapolated
 //     (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)

@@ -32,7 +32,7 @@
 // interface cells and at interface corners with the overburden pressure interpolated to the
 // surface height of the columns, and treats an interface corner as granular below that height
 // and as light fluid above it.
-// Rheology::surface_row_shear_spacing (an option, with Extrapolated): the u of a partly filled
+// Rheology::surface_row_shear_spacing (the default, with Extrapolated): the u of a partly filled
 // surface row (fraction f) is the velocity of its grains, at their centroid (k + f/2) dz, not at
 // the row's centre, so the shear rate at the granular corner below it is
 // (u_k - u_{k-1}) / ((1 + f) dz / 2), not / dz. The corner's eta follows from that gamma, and

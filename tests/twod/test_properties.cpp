@@ -62,6 +62,7 @@ TEST(Properties, SurfaceRowShearSpacingScalesTheCornerBelowAPartlyFilledRow) {
       }
     Rheology r;
     r.newtonian_eta = 0.01;
+    r.surface_row_shear_spacing = false;
     const ViscosityModel plain(r);
     r.surface_row_shear_spacing = true;
     const ViscosityModel spaced(r);

@@ -85,6 +85,13 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
   auto donor = [](double V, double behind, double here, double ahead, double inv_h) {
     return (V >= 0.0 ? here - behind : ahead - here) * inv_h;
   };
+  // the term for field Q at (i, k), transported by Vt along z or along x
+  auto along_z = [&](auto&& Q, int i, int k, double Vt) {
+    return half_dt * Vt * donor(Vt, Q(i, k - 1), Q(i, k), Q(i, k + 1), idz_t);
+  };
+  auto along_x = [&](auto&& Q, int i, int k, double Vt) {
+    return half_dt * Vt * donor(Vt, Q(i - 1, k), Q(i, k), Q(i + 1, k), idx_t);
+  };
   // (for Carry = false the carried field's accessors read u and w and are never used)
   const std::vector<double>& pu = Carry ? *carried.u : u;
   const std::vector<double>& pw = Carry ? *carried.w : w;
@@ -134,9 +141,8 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     if (half_dt > 0.0) {
       const int iu = V >= 0.0 ? i : i + 1;
       const double Wt = 0.25 * (W(iu - 1, k) + W(iu, k) + W(iu - 1, k + 1) + W(iu, k + 1));
-      tq = half_dt * Wt * donor(Wt, U(iu, k - 1), U(iu, k), U(iu, k + 1), idz_t);
-      if constexpr (Carry)
-        tp = half_dt * Wt * donor(Wt, PU(iu, k - 1), PU(iu, k), PU(iu, k + 1), idz_t);
+      tq = along_z(U, iu, k, Wt);
+      if constexpr (Carry) tp = along_z(PU, iu, k, Wt);
     }
     faces.ux_f[f] = C * (upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
     if constexpr (Carry)
@@ -162,9 +168,8 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     if (half_dt > 0.0 && k < nz) {
       const int ku = V >= 0.0 ? k - 1 : k;
       const double Ut = U(i, ku);
-      tq = half_dt * Ut * donor(Ut, U(i - 1, ku), U(i, ku), U(i + 1, ku), idx_t);
-      if constexpr (Carry)
-        tp = half_dt * Ut * donor(Ut, PU(i - 1, ku), PU(i, ku), PU(i + 1, ku), idx_t);
+      tq = along_x(U, i, ku, Ut);
+      if constexpr (Carry) tp = along_x(PU, i, ku, Ut);
     }
     faces.uz_c[f] = C;
     faces.uz_f[f] = C * (face_value(U) - tq);
@@ -179,9 +184,8 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     if (half_dt > 0.0) {
       const int iu = V >= 0.0 ? i - 1 : i;
       const double Wt = W(iu, k);
-      tq = half_dt * Wt * donor(Wt, W(iu, k - 1), W(iu, k), W(iu, k + 1), idz_t);
-      if constexpr (Carry)
-        tp = half_dt * Wt * donor(Wt, PW(iu, k - 1), PW(iu, k), PW(iu, k + 1), idz_t);
+      tq = along_z(W, iu, k, Wt);
+      if constexpr (Carry) tp = along_z(PW, iu, k, Wt);
     }
     faces.wx_f[f] = C * (upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
     if constexpr (Carry)
@@ -197,9 +201,8 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     if (half_dt > 0.0) {
       const int ku = V >= 0.0 ? k : k + 1;
       const double Ut = 0.25 * (U(i, ku - 1) + U(i + 1, ku - 1) + U(i, ku) + U(i + 1, ku));
-      tq = half_dt * Ut * donor(Ut, W(i - 1, ku), W(i, ku), W(i + 1, ku), idx_t);
-      if constexpr (Carry)
-        tp = half_dt * Ut * donor(Ut, PW(i - 1, ku), PW(i, ku), PW(i + 1, ku), idx_t);
+      tq = along_x(W, i, ku, Ut);
+      if constexpr (Carry) tp = along_x(PW, i, ku, Ut);
     }
     faces.wz_f[f] = C * (upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
     if constexpr (Carry)

@@ -6,7 +6,10 @@
 // triad a = b + s c over three 32 MiB arrays (far larger than the caches) measures the memory
 // bandwidth with the same thread count, the reference for the cell-update rate: the solver's
 // loops are memory bound, so bandwidth / (cell updates per second) is the bytes it moves per
-// cell update.
+// cell update. Before and after the runs, a ping-pong of one cache line between two threads
+// measures the cores' round-trip latency: on this project's virtual machine it is 110 ns in some
+// hours and 420-490 ns in others (the two virtual cores placed near or far apart), and the
+// two-thread speed-up follows it, because every parallel loop hands data from core to core.
 //
 //   bench_twod_rollwave                 256x64 to t = 1 s, 512x128 to t = 0.05 s
 //   bench_twod_rollwave T1 T2           the two end times [s] (0 skips a grid)
@@ -17,6 +20,7 @@
 // cores). The results are identical for every thread count (twod/parallel.hpp); only the times
 // differ. Timing on a loaded machine is meaningless: check `uptime` first.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -70,6 +74,35 @@ double triad_bandwidth(int threads) {
   volatile double sink = a[n / 2];  // keep the stores
   (void)sink;
   return 3.0 * 8.0 * double(n) / best / 1e9;
+}
+
+// Round trip of one cache line between two threads (each waits for the other's store), in ns:
+// the median of 9 repetitions of 100 000 round trips.
+double core_round_trip_ns() {
+  std::vector<double> times;
+  for (int rep = 0; rep < 9; ++rep) {
+    constexpr int kTrips = 100000;
+    alignas(64) std::atomic<int> ball{0};
+    std::thread partner([&] {
+      for (int i = 0; i < kTrips; ++i) {
+        while (ball.load(std::memory_order_acquire) != 2 * i + 1) {
+        }
+        ball.store(2 * i + 2, std::memory_order_release);
+      }
+    });
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < kTrips; ++i) {
+      ball.store(2 * i + 1, std::memory_order_release);
+      while (ball.load(std::memory_order_acquire) != 2 * i + 2) {
+      }
+    }
+    times.push_back(
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+        kTrips);
+    partner.join();
+  }
+  std::nth_element(times.begin(), times.begin() + 4, times.end());
+  return times[4];
 }
 
 nlohmann::json run(int nx, int nz, double t_end, int threads, double frame_fraction) {
@@ -134,6 +167,11 @@ int main(int argc, char** argv) {
                         {"hardware_threads", std::thread::hardware_concurrency()},
                         {"triad_bandwidth_GB_per_s", nlohmann::json::object()},
                         {"runs", nlohmann::json::array()}};
+  const bool two_cores = std::thread::hardware_concurrency() >= 2;
+  if (two_cores) {
+    out["core_round_trip_ns"]["before"] = core_round_trip_ns();
+    std::cerr << "core-to-core round trip " << out["core_round_trip_ns"]["before"] << " ns\n";
+  }
   for (int threads : thread_counts) {
     const double bw = triad_bandwidth(threads);
     out["triad_bandwidth_GB_per_s"][std::to_string(threads)] = bw;
@@ -151,5 +189,6 @@ int main(int argc, char** argv) {
       std::cerr << "threads " << threads << ": " << r.dump() << "\n";
     }
   }
+  if (two_cores) out["core_round_trip_ns"]["after"] = core_round_trip_ns();
   std::cout << out.dump(2) << "\n";
 }

@@ -8,15 +8,16 @@
 #include <limits>
 
 #include "common/ill_posedness.hpp"
+#include "twod/parallel.hpp"
 
 namespace granbench::twod {
 
 std::vector<double> surface_heights(const Grid& g, const std::vector<double>& f) {
   std::vector<double> h(g.nx, 0.0);
   // columns in parallel; each column's sum runs over k in the same order as on one thread
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < g.nx; ++i)
+  parallel_for(g.nx, true, [&](int i) {
     for (int k = 0; k < g.nz; ++k) h[i] += f[g.at(i, k)] * g.dz;
+  });
   return h;
 }
 

@@ -25,6 +25,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 namespace {
@@ -210,13 +212,12 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
           C * (upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k <= nz; ++k) {
+  parallel_for(nz + 1, true, [&](int k) {
     if (k < nz) row(u_x_face, k, k >= 1 && k + 1 < nz);  // (the transverse reads k +- 1)
     row(u_z_face, k, k >= 2 && k + 1 <= nz - 1);
     if (k > 0 && k < nz) row(w_x_face, k, true);
     if (k < nz) row(w_z_face, k, k >= 1 && k + 2 <= nz);
-  }
+  });
   // The volumes, from their faces (left/right, bottom/top).
   // (multiplied by the inverse spacings: six divisions per volume were most of this pass's time)
   const double idx = 1.0 / g.dx, idz = 1.0 / g.dz;
@@ -234,8 +235,7 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     const double flux = (Fr - Fl) * idx + (Ft - Fb) * idz;
     return (flux - q * b.div) / b.norm;
   };
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = std::size_t(k) * nx + i,
                         l = std::size_t(k) * nx + (i == 0 ? nx - 1 : i - 1);
@@ -246,8 +246,9 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
         (*carried.adv_u)[c] =
             value(b, faces.ux_p[l], faces.ux_p[c], faces.uz_p[c], faces.uz_p[c + nx], pu[c]);
     }
-#pragma omp parallel for schedule(static)
-  for (int k = 1; k < nz; ++k)
+  });
+  parallel_for(nz - 1, true, [&](int k_from_1) {
+    const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = std::size_t(k) * nx + i,
                         r = std::size_t(k) * nx + (i == nx - 1 ? 0 : i + 1);
@@ -258,6 +259,7 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
         (*carried.adv_w)[c] =
             value(b, faces.wx_p[c], faces.wx_p[r], faces.wz_p[c - nx], faces.wz_p[c], pw[c]);
     }
+  });
 }
 
 // The flux form with or without a carried field.
@@ -288,10 +290,12 @@ void mass_fluxes(const Grid& g, const Fields& s, const GrainFluxes& grains, doub
   m.z.resize(g.w_faces());
   const double gx = (rho_g - rho_l) * g.dx / dt, gz = (rho_g - rho_l) * g.dz / dt;
   const long nx = long(m.x.size()), nz = long(m.z.size());
-#pragma omp parallel for schedule(static)
-  for (long c = 0; c < nx; ++c) m.x[c] = rho_l * s.u[c] + gx * grains.x[c];
-#pragma omp parallel for schedule(static)
-  for (long c = 0; c < nz; ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
+  parallel_for_ranges(nx, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c) m.x[c] = rho_l * s.u[c] + gx * grains.x[c];
+  });
+  parallel_for_ranges(nz, [&](int begin, int end) {
+    for (int c = begin; c < end; ++c) m.z[c] = rho_l * s.w[c] + gz * grains.z[c];
+  });
 }
 
 void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFluxes& m,

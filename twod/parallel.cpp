@@ -2,8 +2,12 @@
 #include "twod/parallel.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <vector>
+
+#include "twod/thread_team.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -11,11 +15,35 @@
 
 namespace granbench::twod {
 
+namespace {
+#ifndef _OPENMP
+thread_local int serial_build_thread_count = 1;
+#endif
+
+// The calling thread's team, remade when the thread count changes.
+ThreadTeam& team_of_this_thread(int threads) {
+  thread_local std::unique_ptr<ThreadTeam> team;
+  if (!team || team->size() != threads) {
+    team.reset();  // (join the old workers before starting new ones)
+    team = std::make_unique<ThreadTeam>(threads);
+  }
+  return *team;
+}
+
+void run_loop(int n, Schedule schedule, IndexBody body) {
+  const int threads = thread_count();
+  if (n > 1 && threads > 1 && !ThreadTeam::inside_a_loop())
+    team_of_this_thread(threads).run(n, schedule, body);
+  else
+    for (int i = 0; i < n; ++i) body(i);
+}
+}  // namespace
+
 int thread_count() {
 #ifdef _OPENMP
   return omp_get_max_threads();
 #else
-  return 1;
+  return serial_build_thread_count;
 #endif
 }
 
@@ -23,23 +51,39 @@ void set_thread_count(int n) {
   if (n < 1) throw std::invalid_argument("set_thread_count: need n >= 1");
 #ifdef _OPENMP
   omp_set_num_threads(n);
+#else
+  serial_build_thread_count = n;
 #endif
 }
 
 void parallel_for(int n, bool parallel, IndexBody body) {
-  if (parallel && n > 1 && thread_count() > 1) {
-#pragma omp parallel for schedule(static)
+  if (parallel)
+    run_loop(n, Schedule::Contiguous, body);
+  else
     for (int i = 0; i < n; ++i) body(i);
-  } else {
-    for (int i = 0; i < n; ++i) body(i);
+}
+
+void parallel_for_interleaved(int n, IndexBody body) {
+  run_loop(n, Schedule::Interleaved, body);
+}
+
+void parallel_for_ranges(int n, RangeBody body) {
+  const int threads = std::min(thread_count(), std::max(n, 1));
+  if (threads == 1 || ThreadTeam::inside_a_loop()) {
+    body(0, n);
+    return;
   }
+  team_of_this_thread(threads).run(threads, Schedule::Contiguous, [&](int t) {
+    body(int(long(n) * t / threads), int(long(n) * (t + 1) / threads));
+  });
 }
 
 namespace {
 
-// sum over the blocks b of block_sum(lo_b, hi_b), added in block order; blocks in parallel.
-template <class BlockSum>
-double blocked_sum(Eigen::Index n, BlockSum&& block_sum) {
+// combine(...combine(value(block 0), value(block 1))..., value(block nb-1)) over the fixed blocks
+// of [0, n), in block order; the blocks' values are computed in parallel.
+template <class BlockValue, class Combine>
+double blocked_reduce(Eigen::Index n, BlockValue&& block_value, Combine&& combine) {
   const Eigen::Index nb = (n + kBlock - 1) / kBlock;
   double small[64];
   std::vector<double> large;
@@ -50,14 +94,30 @@ double blocked_sum(Eigen::Index n, BlockSum&& block_sum) {
   }
   parallel_for(int(nb), true, [&](int b) {
     const Eigen::Index lo = b * kBlock;
-    parts[b] = block_sum(lo, std::min(n, lo + kBlock) - lo);
+    parts[b] = block_value(lo, std::min(n, lo + kBlock) - lo);
   });
-  double sum = 0.0;
-  for (Eigen::Index b = 0; b < nb; ++b) sum += parts[b];
-  return sum;
+  double result = 0.0;
+  for (Eigen::Index b = 0; b < nb; ++b) result = combine(result, parts[b]);
+  return result;
+}
+
+template <class BlockSum>
+double blocked_sum(Eigen::Index n, BlockSum&& block_sum) {
+  return blocked_reduce(n, block_sum, [](double a, double b) { return a + b; });
 }
 
 }  // namespace
+
+double parallel_max_abs(const std::vector<double>& v) {
+  return blocked_reduce(
+      Eigen::Index(v.size()),
+      [&](Eigen::Index lo, Eigen::Index len) {
+        double m = 0.0;
+        for (Eigen::Index j = lo; j < lo + len; ++j) m = std::max(m, std::abs(v[j]));
+        return m;
+      },
+      [](double a, double b) { return std::max(a, b); });
+}
 
 double deterministic_dot(const Eigen::VectorXd& x, const Eigen::VectorXd& y) {
   return blocked_sum(x.size(), [&](Eigen::Index lo, Eigen::Index len) {

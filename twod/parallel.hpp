@@ -1,24 +1,24 @@
-// Threads of the 2D solver (OpenMP) and the rule that keeps its results independent of them.
+// Threads of the 2D solver and the rule that keeps its results independent of them.
 //
 // Every parallel loop of twod/ writes disjoint data (a column, a row, a block), and each element
 // is computed by the same arithmetic as in a serial run, so the result does not depend on which
 // thread computes it. Sums over the grid (the dot products and norms of conjugate gradients) are
-// not left to `omp reduction`, whose combination order follows the thread count and the
-// schedule: they are partial sums over a fixed partition of the index range into blocks of
-// kBlock entries (the same for any thread count), each summed serially, then added in block
-// order on one thread. So 1, 2 or N threads give bitwise identical results
-// (tests/twod/test_thread_invariance.cpp).
+// partial sums over a fixed partition of the index range into blocks of kBlock entries (the same
+// for any thread count), each summed serially, then added in block order on one thread. So 1, 2
+// or N threads give bitwise identical results (tests/twod/test_thread_invariance.cpp).
 //
-// The thread count is OpenMP's: OMP_NUM_THREADS, or set_thread_count() (granbench --threads). It
-// belongs to the calling thread, so a 2D run started on another std::thread has to be given it
-// there (model_runs.cpp does). Built without OpenMP, everything runs on one thread.
+// The loops run on a ThreadTeam (thread_team.hpp) that belongs to the calling thread, not on
+// OpenMP parallel regions: a step runs ~240 loops of a few microseconds each, and the team hands
+// one out in a third of the time libgomp takes to open and close a region here.
 //
-// No OpenMP pragma sits in a header: targets that include these headers are not compiled with
-// -fopenmp (which would also switch on Eigen's own threading of dense products elsewhere).
+// The thread count is OpenMP's setting: OMP_NUM_THREADS, or set_thread_count() (granbench
+// --threads). It belongs to the calling thread, so a 2D run started on another std::thread has to
+// be given it there (model_runs.cpp does). Built without OpenMP, the count is 1 unless set.
 #pragma once
 
 #include <Eigen/Dense>
 #include <type_traits>
+#include <vector>
 
 namespace granbench::twod {
 
@@ -27,28 +27,45 @@ int thread_count();
 // Set it for the calling thread (n >= 1).
 void set_thread_count(int n);
 
-// A non-owning reference to a callable body(int), the body of parallel_for (a plain function
-// call, so that the pragma stays in parallel.cpp; see above).
-class IndexBody {
+// How parallel_for shares an index range among the threads.
+enum class Schedule {
+  Contiguous,   // each thread one contiguous block (OpenMP's static schedule)
+  Interleaved,  // thread t takes t, t + T, t + 2T, ... (balances rows whose work varies with
+                // height)
+};
+
+// A non-owning reference to a callable body(Args...), the body of a parallel loop (a plain
+// function call, so that the threading stays in parallel.cpp).
+template <class... Args>
+class BodyRef {
  public:
   template <class F>
-  requires(!std::is_same_v<std::remove_cvref_t<F>, IndexBody>)  // copies stay copies
-      IndexBody(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
+  requires(!std::is_same_v<std::remove_cvref_t<F>, BodyRef>)  // copies stay copies
+      BodyRef(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
       : object_(const_cast<void*>(static_cast<const void*>(&f))),
-        call_([](void* o, int i) { (*static_cast<std::remove_reference_t<F>*>(o))(i); }) {}
-  void operator()(int i) const { call_(object_, i); }
+        call_([](void* o, Args... a) { (*static_cast<std::remove_reference_t<F>*>(o))(a...); }) {}
+  void operator()(Args... a) const { call_(object_, a...); }
 
  private:
   void* object_;
-  void (*call_)(void*, int);
+  void (*call_)(void*, Args...);
 };
+using IndexBody = BodyRef<int>;       // body(i)
+using RangeBody = BodyRef<int, int>;  // body(begin, end)
 
-// body(i) for i in [0, n), on the threads (static schedule) when `parallel` is true and more
-// than one thread is set; otherwise a plain loop that does not enter OpenMP at all. (libgomp
-// ends every parallel region, even a one-thread team or one with a false `if` clause, at a
-// barrier that makes a futex system call: the ~480 regions of a 256 x 64 rollwave step, most of
-// them on the multigrid's coarse levels, cost 6 % of a one-thread run in the kernel.)
+// body(i) for i in [0, n), on the calling thread's team (contiguous shares) when `parallel` is
+// true and more than one thread is set; otherwise, or when called from inside another parallel
+// loop, a plain loop on the calling thread.
 void parallel_for(int n, bool parallel, IndexBody body);
+// The same with interleaved shares, always threaded when more than one thread is set.
+void parallel_for_interleaved(int n, IndexBody body);
+// body(begin, end) once per thread, over its contiguous share of [0, n) (body(0, n) on one
+// thread): for element-wise loops, whose inner loop the compiler vectorises (a call per element
+// through IndexBody would not be).
+void parallel_for_ranges(int n, RangeBody body);
+
+// The largest |v[n]| (exact in any order, so independent of the thread count).
+double parallel_max_abs(const std::vector<double>& v);
 
 // Fixed block length of the deterministic sums (entries): the 16 k - 32 k unknowns of a
 // 256 x 64 grid give each of a few threads several blocks, and the serial combination of the

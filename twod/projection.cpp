@@ -15,6 +15,7 @@
 
 #include <stdexcept>
 
+#include "twod/parallel.hpp"
 #include "twod/pcg.hpp"
 
 namespace granbench::twod {
@@ -48,20 +49,19 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   auto id = [&](int i, int k) { return g.wrap(i) * nz + k; };
   b_.resize(n);
   if (x_.size() != n) x_.setZero(n);  // warm start: the previous step's increment
-    // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
+  });
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {
     PoissonLevel& op = multigrid_.fine_operator(nx, nz);  // filled in place, no copy
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < nx; ++i) {
+    parallel_for(nx, true, [&](int i) {
       for (int k = 0; k < nz; ++k) op.cx[op.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
       op.cz[op.zface(i, 0)] = 0.0;  // bed: no flux
       for (int k = 1; k < nz; ++k) op.cz[op.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
       op.cz[op.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
-    }
+    });
     multigrid_.rebuild();
     iterations =
         pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op.apply(v, y); },
@@ -89,15 +89,14 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
     iterations = solver_.solve(A_.matrix(), b_, x_);
   }
 
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       s.u[c] = u_star[c] - dt / props.rho_u[c] * (x_[id(i, k)] - x_[id(i - 1, k)]) / g.dx;
       s.p[c] += x_[id(i, k)];
     }
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nx; ++i) {
+  });
+  parallel_for(nx, true, [&](int i) {
     s.w[g.at(i, 0)] = 0.0;
     for (int k = 1; k < nz; ++k) {
       const std::size_t c = g.at(i, k);
@@ -105,7 +104,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
     }
     const std::size_t top = g.at(i, nz);
     s.w[top] = w_star[top] - dt / props.rho_w[top] * (0.0 - x_[id(i, nz - 1)]) / (0.5 * g.dz);
-  }
+  });
   return iterations;
 }
 

@@ -47,6 +47,8 @@
 #include <cmath>
 #include <limits>
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 ViscosityModel::ViscosityModel(const Rheology& r)
@@ -95,16 +97,16 @@ void update_densities(const Grid& g, const std::vector<double>& f, const Rheolog
                       Properties& props) {
   const double rg = r.material.bulk_density(), rl = r.rho_light;
   auto rho = [&](double fr) { return fr * rg + (1.0 - fr) * rl; };
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < g.nz; ++k)
+  parallel_for(g.nz, true, [&](int k) {
     for (int i = 0; i < g.nx; ++i)
       props.rho_u[g.at(i, k)] = rho(0.5 * (f[g.at(i - 1, k)] + f[g.at(i, k)]));
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k <= g.nz; ++k)
+  });
+  parallel_for(g.nz + 1, true, [&](int k) {
     for (int i = 0; i < g.nx; ++i) {
       const double fb = f[g.at(i, std::max(k - 1, 0))], ft = f[g.at(i, std::min(k, g.nz - 1))];
       props.rho_w[g.at(i, k)] = rho(0.5 * (fb + ft));
     }
+  });
 }
 
 void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
@@ -134,8 +136,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   std::vector<double>& gam = props.gamma_n;
   gam.resize(g.corners());
   const double idx = 1.0 / g.dx, idz = 1.0 / g.dz;  // (divisions were a visible part of this)
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k <= nz; ++k)
+  parallel_for(nz + 1, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const double dwdx = (w[g.at(i, k)] - w[g.at(i - 1, k)]) * idx;
       double dudz;
@@ -147,15 +148,16 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
         dudz = (u[g.at(i, k)] - u[g.at(i, k - 1)]) * idz;
       gam[g.at(i, k)] = dudz + dwdx;
     }
+  });
   // Interface pressure (Rheology::interface_pressure): column heights and, per column, the
   // highest full cell below the surface.
   const bool extrapolate = model.rheology().interface_pressure == InterfacePressure::Extrapolated;
   std::vector<double>& hcol = props.column_height;
   if (extrapolate) {
     hcol.assign(nx, 0.0);
-#pragma omp parallel for schedule(static)  // columns; each sums over k in the serial order
-    for (int i = 0; i < nx; ++i)
+    parallel_for(nx, true, [&](int i) {  // columns; each sums over k in the serial order
       for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
+    });
   }
   // Per column (cells: column i; corners: columns i-1 and i together), the nearest row at or
   // above k that is empty (nz if none) and the nearest at or below k that is full (-1 if none),
@@ -166,8 +168,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   if (extrapolate) {
     for (auto* v : {&empty_above_c, &full_below_c, &empty_above_n, &full_below_n})
       v->resize(std::size_t(nx) * nz);
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < nx; ++i) {
+    parallel_for(nx, true, [&](int i) {
       auto cell_is = [&](int k, double v) { return f[g.at(i, k)] == v; };
       auto pair_is = [&](int k, double v) { return f[g.at(i - 1, k)] == v && f[g.at(i, k)] == v; };
       int full_c = -1, full_n = -1;
@@ -184,7 +185,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
         empty_above_c[g.at(i, k)] = empty_c;
         empty_above_n[g.at(i, k)] = empty_n;
       }
-    }
+    });
   }
   // p at height z in column i (or the mean of columns i-1, i when `corner`): linear between the
   // centre of the highest row below z whose cells are full and, at the surface height h, the
@@ -212,8 +213,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   Dzz.resize(g.cells());
   // Rows dealt out one at a time: mu(I) is evaluated only below the surface, so contiguous
   // blocks of rows gave one thread the grains and the other the light fluid.
-#pragma omp parallel for schedule(static, 1)
-  for (int k = 0; k < nz; ++k)
+  parallel_for_interleaved(nz, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
@@ -228,9 +228,9 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
       props.I_c[c] = model.inertial_number(p[c], D);
     }
-    // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
-#pragma omp parallel for schedule(static, 1)
-  for (int k = 0; k <= nz; ++k) {
+  });
+  // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
+  parallel_for_interleaved(nz + 1, [&](int k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
     for (int i = 0; i < nx; ++i) {
       const std::size_t a = g.at(i - 1, kb), b = g.at(i, kb), c = g.at(i - 1, kt), d = g.at(i, kt);
@@ -272,7 +272,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       }
       set_eta(fn, pn, D, shear_share, props.eta_n[n], props.eta_n_tangent[n]);
     }
-  }
+  });
 }
 
 }  // namespace granbench::twod

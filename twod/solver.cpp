@@ -51,6 +51,7 @@
 // with a DivergenceError naming the time, the place and the quantity.
 #include "twod/solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -175,12 +176,14 @@ double Solver::step(double dt_limit) {
         adv_w_ = adv_w_old_;
       } else {
         const long nu = long(adv_u_.size()), nw = long(adv_w_.size());
-#pragma omp parallel for schedule(static)
-        for (long n = 0; n < nu; ++n)
-          adv_u_[n] = (1.0 + 0.5 * r) * adv_u_old_[n] - 0.5 * r * adv_u_[n];
-#pragma omp parallel for schedule(static)
-        for (long n = 0; n < nw; ++n)
-          adv_w_[n] = (1.0 + 0.5 * r) * adv_w_old_[n] - 0.5 * r * adv_w_[n];
+        parallel_for_ranges(nu, [&](int begin, int end) {
+          for (int n = begin; n < end; ++n)
+            adv_u_[n] = (1.0 + 0.5 * r) * adv_u_old_[n] - 0.5 * r * adv_u_[n];
+        });
+        parallel_for_ranges(nw, [&](int begin, int end) {
+          for (int n = begin; n < end; ++n)
+            adv_w_[n] = (1.0 + 0.5 * r) * adv_w_old_[n] - 0.5 * r * adv_w_[n];
+        });
       }
     }
   } else {
@@ -228,10 +231,12 @@ const Fields& Solver::interface_velocity(double r) {
     midstep_.w.resize(s_.w.size());
     const long nu = long(s_.u.size()), nw = long(s_.w.size());
     const double c = 0.5 * r;
-#pragma omp parallel for schedule(static)
-    for (long n = 0; n < nu; ++n) midstep_.u[n] = s_.u[n] + c * (s_.u[n] - previous_.u[n]);
-#pragma omp parallel for schedule(static)
-    for (long n = 0; n < nw; ++n) midstep_.w[n] = s_.w[n] + c * (s_.w[n] - previous_.w[n]);
+    parallel_for_ranges(nu, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) midstep_.u[n] = s_.u[n] + c * (s_.u[n] - previous_.u[n]);
+    });
+    parallel_for_ranges(nw, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) midstep_.w[n] = s_.w[n] + c * (s_.w[n] - previous_.w[n]);
+    });
   }
   previous_.u = s_.u;
   previous_.w = s_.w;
@@ -251,10 +256,12 @@ double Solver::bdf2_rescale_advection(double dt, double r) {
   // The first step, or a restart without the memory: backward Euler (a0 = 1, a2 = 0), and only
   // the advected velocity u~ = u^n - dt A (whatever the step's advection; zero without it).
   if (r <= 0.0 || increment_u_.size() != adv_u_.size() || increment_w_.size() != adv_w_.size()) {
-#pragma omp parallel for schedule(static)
-    for (long n = 0; n < nu; ++n) advected_u_[n] = s_.u[n] - dt * adv_u_[n];
-#pragma omp parallel for schedule(static)
-    for (long n = 0; n < nw; ++n) advected_w_[n] = s_.w[n] - dt * adv_w_[n];
+    parallel_for_ranges(nu, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) advected_u_[n] = s_.u[n] - dt * adv_u_[n];
+    });
+    parallel_for_ranges(nw, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) advected_w_[n] = s_.w[n] - dt * adv_w_[n];
+    });
     return dt;
   }
   const double a0 = (1.0 + 2.0 * r) / (1.0 + r), a2 = r * r / (1.0 + r), c = a2 / dt;
@@ -265,19 +272,21 @@ double Solver::bdf2_rescale_advection(double dt, double r) {
                   std::vector<double>& advected, bool carried) {
     const long size = long(adv.size());
     if (carried) {
-#pragma omp parallel for schedule(static)
-      for (long n = 0; n < size; ++n) {
-        const double a = adv[n];
-        advected[n] = vel[n] - dt * a;
-        adv[n] = a0 * a - c * (increment[n] - dt * transport[n]);
-      }
+      parallel_for_ranges(size, [&](int begin, int end) {
+        for (int n = begin; n < end; ++n) {
+          const double a = adv[n];
+          advected[n] = vel[n] - dt * a;
+          adv[n] = a0 * a - c * (increment[n] - dt * transport[n]);
+        }
+      });
     } else {
-#pragma omp parallel for schedule(static)
-      for (long n = 0; n < size; ++n) {
-        const double a = adv[n];
-        advected[n] = vel[n] - dt * a;
-        adv[n] = a0 * a - c * increment[n];
-      }
+      parallel_for_ranges(size, [&](int begin, int end) {
+        for (int n = begin; n < end; ++n) {
+          const double a = adv[n];
+          advected[n] = vel[n] - dt * a;
+          adv[n] = a0 * a - c * increment[n];
+        }
+      });
     }
   };
   const bool carried = carried_increment().u != nullptr;
@@ -290,10 +299,12 @@ void Solver::record_increment() {
   const long nu = long(advected_u_.size()), nw = long(advected_w_.size());
   increment_u_.resize(std::size_t(nu));
   increment_w_.resize(std::size_t(nw));
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < nu; ++n) increment_u_[n] = s_.u[n] - advected_u_[n];
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < nw; ++n) increment_w_[n] = s_.w[n] - advected_w_[n];
+  parallel_for_ranges(nu, [&](int begin, int end) {
+    for (int n = begin; n < end; ++n) increment_u_[n] = s_.u[n] - advected_u_[n];
+  });
+  parallel_for_ranges(nw, [&](int begin, int end) {
+    for (int n = begin; n < end; ++n) increment_w_[n] = s_.w[n] - advected_w_[n];
+  });
 }
 
 void Solver::advance_to(double t_end) {
@@ -321,15 +332,16 @@ void Solver::check_health() const {
            !std::isfinite(w) || std::abs(w) > params_.velocity_limit || !std::isfinite(s_.p[c]) ||
            !std::isfinite(s_.f[c]);
   };
-  int bad_rows = 0;
-#pragma omp parallel for schedule(static) reduction(+ : bad_rows)
-  for (int k = 0; k < g_.nz; ++k)
+  std::vector<char>& row_is_bad = bad_row_flags_;
+  row_is_bad.assign(std::size_t(g_.nz), 0);
+  parallel_for(g_.nz, true, [&](int k) {
     for (int i = 0; i < g_.nx; ++i)
       if (bad(g_.at(i, k), s_.w[g_.at(i, k + 1)])) {
-        ++bad_rows;
+        row_is_bad[k] = 1;
         break;
       }
-  if (bad_rows == 0) return;
+  });
+  if (std::find(row_is_bad.begin(), row_is_bad.end(), 1) == row_is_bad.end()) return;
   auto fail = [&](const char* what, double value, double x_grid, double z) {
     const double x = lab_position(g_, x_grid, s_.t);  // (frame.hpp)
     std::ostringstream m;

@@ -120,6 +120,7 @@ class Solver {
   std::vector<double> advected_u_, advected_w_, increment_u_, increment_w_;
   std::vector<double> transport_u_, transport_w_;  // scratch: the transport of delta^n
   Fields previous_, midstep_;  // u^{n-1} and the mid-step velocity (interface_midstep_velocity)
+  mutable std::vector<char> bad_row_flags_;  // scratch of check_health: a flag per row
   RunStatistics stats_;
 };
 

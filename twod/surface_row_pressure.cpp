@@ -57,6 +57,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 void surface_row_pressure_correction(const Grid& g, const SolverParams& params,
@@ -74,9 +76,9 @@ void surface_row_pressure_correction(const Grid& g, const SolverParams& params,
   };
   const double scale = drho * g_cos * 0.5 * g.dz * g.dz;
   correction.resize(g.cells());
-#pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
-  for (int k = 0; k < g.nz; ++k)
+  parallel_for(g.nz, true, [&](int k) {  // rows in parallel, each entry written once
     for (int i = 0; i < g.nx; ++i) correction[g.at(i, k)] = scale * (m(i, k) - m(i - 1, k));
+  });
 }
 
 }  // namespace granbench::twod

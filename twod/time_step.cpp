@@ -10,17 +10,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 double choose_time_step(const Grid& g, const Fields& s, const SolverParams& params,
                         double dt_previous) {
-  // (a max is exact in any order, so the reduction does not depend on the thread count)
-  double umax = 0.0, wmax = 0.0;
-  const long nu = long(s.u.size()), nw = long(s.w.size());
-#pragma omp parallel for schedule(static) reduction(max : umax)
-  for (long n = 0; n < nu; ++n) umax = std::max(umax, std::abs(s.u[n]));
-#pragma omp parallel for schedule(static) reduction(max : wmax)
-  for (long n = 0; n < nw; ++n) wmax = std::max(wmax, std::abs(s.w[n]));
+  // (parallel; a max is exact in any order, so it does not depend on the thread count)
+  const double umax = parallel_max_abs(s.u), wmax = parallel_max_abs(s.w);
   double dt = params.dt_max;
   if (umax > 0.0) dt = std::min(dt, params.cfl * g.dx / umax);
   if (wmax > 0.0) dt = std::min(dt, params.cfl * g.dz / wmax);

@@ -21,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/parallel.hpp"
+
 namespace granbench::twod {
 
 void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
@@ -32,13 +34,13 @@ void viscosity_pressure(const Grid& g, const SolverParams& params, const std::ve
     return rho_g * g_cos * std::max(h - z, 0.0) + rho_l * g_cos * (g.Lz - std::max(h, z));
   };
   p_eta.resize(p.size());
-#pragma omp parallel for schedule(static)  // rows in parallel, each entry written once
-  for (int k = 0; k < g.nz; ++k) {
+  parallel_for(g.nz, true, [&](int k) {  // rows in parallel, each entry written once
     const double z = g.zc(k);
     for (int i = 0; i < g.nx; ++i)
       p_eta[g.at(i, k)] =
           p[g.at(i, k)] + (hydrostatic(h_after[i], z) - hydrostatic(h_before[i], z));
-  }
+
+  });
 }
 
 }  // namespace granbench::twod

@@ -120,13 +120,13 @@ void ViscousOperator::set_stress(const std::vector<double>& eta_c,
   // along a line read contiguous memory.
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nx; ++i)
+  parallel_for(nx, true, [&](int i) {
     for (int k = 0; k <= nz; ++k) {
       const std::size_t c = g_.at(i, k);
       if (k < nz) kc_[i * nz + k] = 2.0 * eta_c[c] * V;
       kn_[i * (nz + 1) + k] = eta_n[c] * V;
     }
+  });
   std::fill(mass_u_.begin(), mass_u_.end(), 0.0);
   std::fill(mass_w_.begin(), mass_w_.end(), 0.0);
 }
@@ -136,13 +136,13 @@ void ViscousOperator::set(const Properties& props, const std::vector<double>& et
   set_stress(eta_c, eta_n);
   const double V_dt = g_.cell_volume() / dt;
   const int nx = g_.nx, nz = g_.nz;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nx; ++i)
+  parallel_for(nx, true, [&](int i) {
     for (int k = 0; k < nz; ++k) {
       const std::size_t c = g_.at(i, k);
       mass_u_[i * nz + k] = props.rho_u[c] * V_dt;
       if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V_dt;
     }
+  });
   // Thomas factors of each line: m_k = d_k - a_k c'_{k-1}, c'_k = c_k / m_k (lines in parallel).
   auto factor_row = [&](int row, auto&& entries) {
     double diag = 0.0, lower = 0.0, upper = 0.0;
@@ -162,14 +162,14 @@ void ViscousOperator::set(const Properties& props, const std::vector<double>& et
     inv_m_[row] = 1.0 / m;
     cp_[row] = upper * inv_m_[row];
   };
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nx; ++i)
+  parallel_for(nx, true, [&](int i) {
     for (int k = 0; k < nz; ++k)
       factor_row(u_index(i, k), [&](auto&& visit) { visit_u_row(i, k, visit); });
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < nx; ++i)
+  });
+  parallel_for(nx, true, [&](int i) {
     for (int k = 1; k < nz; ++k)
       factor_row(w_index(i, k), [&](auto&& visit) { visit_w_row(i, k, visit); });
+  });
 }
 
 void ViscousOperator::apply_u_column(int i, const Eigen::VectorXd& x, Eigen::VectorXd& y) const {

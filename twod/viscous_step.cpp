@@ -68,8 +68,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
                         std::vector<double>& out) {
       out.resize(eta.size());
       const long n = long(eta.size());
-#pragma omp parallel for schedule(static)
-      for (long c = 0; c < n; ++c) out[c] = std::max(eta_t[c], eta[c] - K);
+      parallel_for_ranges(n, [&](int begin, int end) {
+        for (int c = begin; c < end; ++c) out[c] = std::max(eta_t[c], eta[c] - K);
+      });
     };
     implicit(props.eta_c, props.eta_c_tangent, implicit_c_);
     implicit(props.eta_n, props.eta_n_tangent, implicit_n_);
@@ -85,8 +86,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n. (Loops over
   // rows in parallel: each entry is written once; parallel.hpp.)
   const double inv_dt = 1.0 / dt;
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.u_index(i, k);
@@ -95,8 +95,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];
     }
-#pragma omp parallel for schedule(static)
-  for (int k = 1; k < nz; ++k)
+  });
+  parallel_for(nz - 1, true, [&](int k_from_1) {
+    const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.w_index(i, k);
@@ -104,23 +105,27 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
               g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
     }
+  });
   // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n (or the iterate `about`).
   if (tangent_) {
     const Fields& at = about ? *about : s;
     x_old_.resize(op_.size());
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < nz; ++k)
+    parallel_for(nz, true, [&](int k) {
       for (int i = 0; i < nx; ++i) x_old_[op_.u_index(i, k)] = at.u[g.at(i, k)];
-#pragma omp parallel for schedule(static)
-    for (int k = 1; k < nz; ++k)
+    });
+    parallel_for(nz - 1, true, [&](int k_from_1) {
+      const int k = k_from_1 + 1;
       for (int i = 0; i < nx; ++i) x_old_[op_.w_index(i, k)] = at.w[g.at(i, k)];
+    });
     lagged_c_.resize(props.eta_c.size());
     lagged_n_.resize(props.eta_n.size());
     const long nc = long(lagged_c_.size()), nn = long(lagged_n_.size());
-#pragma omp parallel for schedule(static)
-    for (long c = 0; c < nc; ++c) lagged_c_[c] = props.eta_c[c] - implicit_c_[c];
-#pragma omp parallel for schedule(static)
-    for (long c = 0; c < nn; ++c) lagged_n_[c] = props.eta_n[c] - implicit_n_[c];
+    parallel_for_ranges(nc, [&](int begin, int end) {
+      for (int c = begin; c < end; ++c) lagged_c_[c] = props.eta_c[c] - implicit_c_[c];
+    });
+    parallel_for_ranges(nn, [&](int begin, int end) {
+      for (int c = begin; c < end; ++c) lagged_n_[c] = props.eta_n[c] - implicit_n_[c];
+    });
     explicit_stress_.set_stress(lagged_c_, lagged_n_);
     explicit_stress_.apply(x_old_, y_);
     parallel_difference(b_, y_, b_);
@@ -155,19 +160,21 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   parallel_copy(x_, increment_);
   u_star.resize(g.cells());
   w_star.assign(g.w_faces(), 0.0);
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       increment_[op_.u_index(i, k)] -= s.u[g.at(i, k)];
       u_star[g.at(i, k)] = x_[op_.u_index(i, k)];
     }
-#pragma omp parallel for schedule(static)
-  for (int k = 1; k < nz; ++k)
+  });
+  parallel_for(nz - 1, true, [&](int k_from_1) {
+    const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) increment_[op_.w_index(i, k)] -= s.w[g.at(i, k)];
+  });
   dt_previous_ = dt;
-#pragma omp parallel for schedule(static)
-  for (int k = 1; k < nz; ++k)
+  parallel_for(nz - 1, true, [&](int k_from_1) {
+    const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) w_star[g.at(i, k)] = x_[op_.w_index(i, k)];
+  });
   for (int i = 0; i < nx; ++i) w_star[g.at(i, nz)] = w_star[g.at(i, nz - 1)];  // dw/dz = 0
   return iterations;
 }

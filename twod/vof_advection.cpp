@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/parallel.hpp"
 #include "twod/plic.hpp"
 
 namespace granbench::twod {
@@ -59,8 +60,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
     flux.resize(g.cells());  // flux through x-face (i, k); every face written below
     // (rows one at a time: only the few rows at the surface need PLIC, and in contiguous blocks
     // they all fell to one thread)
-#pragma omp parallel for schedule(static, 1)
-    for (int k = 0; k < nz; ++k)
+    parallel_for_interleaved(nz, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const double s = u[g.at(i, k)] * r;
         if (s > 0.0)
@@ -70,18 +70,19 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
         else
           flux[g.at(i, k)] = 0.0;
       }
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < nz; ++k)
+    });
+    parallel_for(nz, true, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const std::size_t a = g.at(i, k), b = g.at(i + 1, k);
         f[a] += -(flux[b] - flux[a]) + c[a] * r * (u[b] - u[a]);
       }
+    });
   } else {
     const double r = dt / g.dz;
     flux.resize(g.w_faces());  // flux through z-face (i, k); every face written below
     for (int i = 0; i < nx; ++i) flux[g.at(i, 0)] = 0.0;  // the bed
-#pragma omp parallel for schedule(static, 1)
-    for (int k = 1; k <= nz; ++k)
+    parallel_for_interleaved(nz + 1 - 1, [&](int k_from_1) {
+      const int k = k_from_1 + 1;
       for (int i = 0; i < nx; ++i) {
         const double s = w[g.at(i, k)] * r;
         if (s > 0.0)
@@ -91,18 +92,18 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
         else  // no flow, or inflow through the top, which carries light fluid only (f = 0)
           flux[g.at(i, k)] = 0.0;
       }
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < nz; ++k)
+    });
+    parallel_for(nz, true, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const std::size_t a = g.at(i, k), b = g.at(i, k + 1);
         f[a] += -(flux[b] - flux[a]) + c[a] * r * (w[b] - w[a]);
       }
+    });
   }
   // Clip to [0, 1]; the clipped volume is summed per row, then over the rows in order, so that
   // it does not depend on the thread count.
   clipped_rows.assign(nz, 0.0);
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
+  parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       double& v = f[g.at(i, k)];
       if (v < 0.0) {
@@ -113,6 +114,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
         v = 1.0;
       }
     }
+  });
   for (double row : clipped_rows) stats.clipped_volume += row;
 }
 }  // namespace

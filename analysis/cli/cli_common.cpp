@@ -163,7 +163,7 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
 void add_threads_option(CLI::App& app) {
   app.add_option_function<int>(
          "--threads", [](const int& n) { twod::set_thread_count(n); },
-         "OpenMP threads of the 2D solver, integer >= 1 (default: OMP_NUM_THREADS or all cores)")
+         "threads of the 2D solver, integer >= 1 (default: OMP_NUM_THREADS or all cores)")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
             std::size_t used = 0;

@@ -54,7 +54,7 @@ struct OutputOptions {
 };
 void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot = true);
 
-// --threads N (integer >= 1): the OpenMP threads of the 2D solver for this command, set on the
+// --threads N (integer >= 1): the threads of the 2D solver for this command, set on the
 // command's thread as soon as the option is parsed (twod/parallel.hpp); without it,
 // OMP_NUM_THREADS or all cores. Results do not depend on it.
 void add_threads_option(CLI::App& app);

@@ -36,7 +36,7 @@ struct TwodSettings {
   // 0.5 the largest |u| relative to the grid, and so the number of steps, about halves. 0: the
   // lab frame. The output is in the lab frame either way.
   double frame_fraction = 0.5;
-  // OpenMP threads of the 2D solver: by default those of the thread that makes the settings
+  // Threads of the 2D solver: by default those of the thread that makes the settings
   // (OMP_NUM_THREADS or --threads), which the run keeps on whichever thread it is started.
   int threads = twod::thread_count();
   // nx is for the reference length Lx = 8 cm of the presets (dx = 0.5 mm at 160 cells); a sweep

@@ -1,4 +1,4 @@
-// The 2D solver gives bitwise identical results for any number of OpenMP threads
+// The 2D solver gives bitwise identical results for any number of threads
 // (twod/parallel.hpp): the same small nonlinear rollwave run with 1 and with 2 threads must
 // produce the same surface series h(x, t), u_mean(x, t) and the same final u, w, p, f, step
 // count and solver iterations, to the bit. This fails if any parallel loop lets its result
@@ -8,7 +8,7 @@
 // Two grids: 128 x 32 (even nx; the finest multigrid level is large enough to be threaded) and
 // 65 x 32 (odd nx: the zebra colours meet across the periodic boundary, the grid cannot be
 // coarsened and the multigrid iterates line sweeps on its only level). Both large enough for
-// every threaded path (parallel regions are skipped below 2048 cells in the multigrid). The even
+// every threaded path (parallel loops are skipped below 2048 cells in the multigrid). The even
 // grid moves at half the surface speed, as the commands' runs do (twod/frame.hpp); the odd one
 // is at rest.
 #include <gtest/gtest.h>
@@ -92,21 +92,4 @@ TEST(ThreadInvariance, EvenGridOneAndTwoThreadsBitwiseIdentical) {
 
 TEST(ThreadInvariance, OddGridOneAndTwoThreadsBitwiseIdentical) {
   expect_identical(65, 32, 0.0);
-}
-
-// parallel_for (parallel.hpp) visits every index exactly once, on one thread or two, threaded or
-// not, and for the empty and one-entry ranges.
-TEST(ParallelFor, VisitsEveryIndexOnceForAnyThreadCount) {
-  const int saved = thread_count();
-  for (int threads : {1, 2})
-    for (bool parallel : {false, true})
-      for (int n : {0, 1, 7, 1000}) {
-        SCOPED_TRACE(testing::Message()
-                     << threads << " threads, parallel " << parallel << ", n " << n);
-        set_thread_count(threads);
-        std::vector<int> visits(n, 0);
-        parallel_for(n, parallel, [&](int i) { ++visits[i]; });
-        EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), n);
-      }
-  set_thread_count(saved);
 }

@@ -144,10 +144,10 @@ struct SolverParams {
   // by 0.0024 and 0.0011 (docs/twod-validation.md §10).
   bool advection_transverse_terms = true;
   bool advect_interface = true;
-  // OpenMP threads of the solver's loops (parallel.hpp); results do not depend on it. The
+  // Threads of the solver's loops (parallel.hpp); results do not depend on it. The
   // default is the thread count of the thread that makes these parameters (OMP_NUM_THREADS, or
   // granbench --threads on the command's thread), so that a run handed to another std::thread
-  // (compare, sweep --jobs, case --jobs) keeps it: OpenMP's setting belongs to each thread.
+  // (compare, sweep --jobs, case --jobs) keeps it: the setting belongs to each thread.
   int threads = thread_count();
 };
 

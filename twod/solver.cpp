@@ -117,7 +117,7 @@ void Solver::set_warm_start(const WarmStart& w) {
 }
 
 double Solver::step(double dt_limit) {
-  // The thread count is per calling thread in OpenMP: set it for whichever thread steps.
+  // The thread count belongs to the calling thread: set it for whichever thread steps.
   if (params_.threads >= 1 && params_.threads != thread_count()) set_thread_count(params_.threads);
   double dt_full = choose_time_step(g_, s_, params_, stats_.dt_last);
   if (stats_.dt_last <= 0.0) dt_full = std::min(dt_full, params_.dt_initial);

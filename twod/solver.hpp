@@ -70,7 +70,7 @@ class Solver {
   Fields& mutable_state() { return s_; }
   const Properties& properties() const { return props_; }
   const SolverParams& params() const { return params_; }
-  // Change the OpenMP thread count from the next step on (results do not depend on it).
+  // Change the thread count from the next step on (results do not depend on it).
   void set_threads(int n) { params_.threads = n; }
   const ViscosityModel& viscosity_model() const { return model_; }
   RunStatistics statistics() const;

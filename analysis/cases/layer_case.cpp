@@ -161,7 +161,7 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
           t_now[i] = t;
           show();
         };
-      LayerRunSpec run = spec.runs[i];  // the workers share the OpenMP threads
+      LayerRunSpec run = spec.runs[i];  // the workers share the 2D solver's threads
       run.params.threads = std::max(1, run.params.threads / static_cast<int>(workers));
       out.runs[i] = run_layer(run, lp);
       std::lock_guard lock(mutex);

@@ -69,8 +69,8 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
 // Both models on the same case at once, each on its own std::thread; returns {depthavg, twod},
 // the same records as run_depthavg and run_twod one after the other (neither run reads the
 // other's state, and the 2D results do not depend on its thread count). While the
-// depth-averaged run occupies a core, the 2D solver uses twod.threads - 1 OpenMP threads (at
-// least 1), then twod.threads: oversubscribed OpenMP threads wait on each other.
+// depth-averaged run occupies a core, the 2D solver uses twod.threads - 1 threads (at
+// least 1), then twod.threads: oversubscribed threads wait on each other.
 std::pair<ModelRun, ModelRun> run_both(const ChuteCase& c, const DepthAvgSettings& depthavg,
                                        const TwodSettings& twod, const RunControl& ctl = {});
 

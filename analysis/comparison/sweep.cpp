@@ -67,7 +67,7 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
 }
 
 // The 2D settings of a point of length Lx: the preset's dx at every length, and the --jobs
-// workers sharing the OpenMP threads (oversubscribed threads wait on each other).
+// workers sharing the 2D solver's threads (oversubscribed threads wait on each other).
 TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
   TwodSettings twod = spec.twod_settings;
   twod.nx = twod.cells_along(Lx);

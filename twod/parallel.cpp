@@ -136,39 +136,36 @@ double cg_update(double alpha, const Eigen::VectorXd& d, const Eigen::VectorXd& 
 
 namespace {
 
-// block(lo, len) for the fixed blocks of [0, n), in parallel.
-template <class Block>
-void for_blocks(Eigen::Index n, Block&& block) {
-  const Eigen::Index nb = (n + kBlock - 1) / kBlock;
-  parallel_for(int(nb), true, [&](int b) {
-    const Eigen::Index lo = b * kBlock;
-    block(lo, std::min(n, lo + kBlock) - lo);
-  });
+// Element-wise vector operations: one contiguous share per thread (parallel_for_ranges), the
+// inner loop vectorised (the fixed blocks matter for sums only).
+template <class Segment>
+void for_segments(Eigen::Index n, Segment&& segment) {
+  parallel_for_ranges(int(n), [&](int begin, int end) { segment(begin, end - begin); });
 }
 
 }  // namespace
 
 void cg_direction(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& d) {
-  for_blocks(z.size(), [&](Eigen::Index lo, Eigen::Index len) {
+  for_segments(z.size(), [&](Eigen::Index lo, Eigen::Index len) {
     d.segment(lo, len) = z.segment(lo, len) + beta * d.segment(lo, len);
   });
 }
 
 void parallel_copy(const Eigen::VectorXd& from, Eigen::VectorXd& to) {
   to.resize(from.size());
-  for_blocks(from.size(), [&](Eigen::Index lo, Eigen::Index len) {
+  for_segments(from.size(), [&](Eigen::Index lo, Eigen::Index len) {
     to.segment(lo, len) = from.segment(lo, len);
   });
 }
 
 void parallel_zero(Eigen::Index n, Eigen::VectorXd& x) {
   x.resize(n);
-  for_blocks(n, [&](Eigen::Index lo, Eigen::Index len) { x.segment(lo, len).setZero(); });
+  for_segments(n, [&](Eigen::Index lo, Eigen::Index len) { x.segment(lo, len).setZero(); });
 }
 
 void parallel_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out) {
   out.resize(a.size());
-  for_blocks(a.size(), [&](Eigen::Index lo, Eigen::Index len) {
+  for_segments(a.size(), [&](Eigen::Index lo, Eigen::Index len) {
     out.segment(lo, len) = a.segment(lo, len) - b.segment(lo, len);
   });
 }

@@ -156,6 +156,8 @@ int main(int argc, char** argv) {
       a.num("mid_vof", params.interface_midstep_velocity ? 1 : 0) != 0;
   params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
   params.consistent_momentum = a.num("consistent", params.consistent_momentum ? 1 : 0) != 0;
+  params.predictor_pressure_acceleration =
+      a.num("accel", params.predictor_pressure_acceleration ? 1 : 0) != 0;
   params.advection_transverse_terms =
       a.num("transverse", params.advection_transverse_terms ? 1 : 0) != 0;
   params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;

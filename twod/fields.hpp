@@ -29,6 +29,9 @@ struct Fields {
 
 struct Properties {
   std::vector<double> rho_u, rho_w;  // face densities (rho_w has nz + 1 rows)
+  // The face densities of the step before, against which p^n was balanced (viscous_step.cpp);
+  // empty before the first step.
+  std::vector<double> rho_u_before, rho_w_before;
   std::vector<double> eta_c, eta_n;  // cell-centre and corner viscosities
   std::vector<double> eta_c_tangent, eta_n_tangent;
   std::vector<double> I_c;  // inertial number (2.8) at cell centres (diagnostic)

@@ -115,6 +115,15 @@ struct SolverParams {
   // backward Euler, first order: the section 7 growth 0.6 % lower at cfl 0.4
   // (docs/twod-validation.md §10).
   bool stress_bdf2 = true;
+  // What the momentum predictor takes from the previous step's pressure p^n (viscous_step.cpp).
+  // true (default): the acceleration grad p^n / rho^n it gave, through the implicit stress
+  // solve, and the rest of dt grad p^n / rho^{n+1} added after it; a face the interface has
+  // emptied then keeps its light fluid at the acceleration the grains had. false: the force
+  // grad p^n through the solve, which drives such a face's light fluid at up to 1e5 g; the
+  // stress spreads that into the grains beside it, and the 12 cm sine rollwave diverged at
+  // 6.5 s (docs/twod-validation.md §10, last subsection). Identical where no face's density
+  // changes.
+  bool predictor_pressure_acceleration = true;
   // The velocity that moves the interface (and carries the momentum's mass fluxes): true: the
   // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are;
   // false: u^n, a first-order lag of the surface's kinematic condition.

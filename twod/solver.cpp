@@ -150,6 +150,9 @@ double Solver::step(double dt_limit) {
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
   //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
   //    (surface_row_pressure.cpp)
+  // (the densities p^n was balanced against, for the predictor: viscous_step.cpp)
+  props_.rho_u_before = props_.rho_u;
+  props_.rho_w_before = props_.rho_w;
   update_densities(g_, s_.f, params_.rheology, props_);
   if (params_.hydrostatic_viscosity_pressure) {
     viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, p_eta_);

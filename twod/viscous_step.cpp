@@ -3,6 +3,9 @@
 //   rho^{n+1} (u* - u^n)/dt = div(2 eta D(u*)) - grad p^n + rho^{n+1} (g - (u^n . grad) u^n),
 //   g = (g sin zeta, -g cos zeta),
 //
+// where a face has lost mass in the interface's move, grad p^n enters as the acceleration it gave,
+// (rho^{n+1}/rho^n) grad p^n, and the rest after the solve (predict(); SolverParams::
+// predictor_pressure_acceleration),
 // with the stress linearised about u^n (SolverParams::viscosity_tangent, the default):
 //
 //   tau^{n+1} = tau(D^n, p*) + C^n : (D* - D^n)  ~  2 eta_t D* + 2 (eta - eta_t) D^n,
@@ -43,6 +46,7 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
       kind_(params.viscous_solver),
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
+      pressure_acceleration_(params.predictor_pressure_acceleration),
       rho_grains_(params.rheology.material.bulk_density()),
       op_(g),
       explicit_stress_(g),
@@ -85,13 +89,39 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   x_.resize(op_.size());
   // Mass terms, gravity, pressure gradient and advection; the initial guess is u^n. (Loops over
   // rows in parallel: each entry is written once; parallel.hpp.)
+  // p^n was balanced against the face densities of the step before, rho^n. Where the interface's
+  // move has emptied a face (a droplet of grains falling away, a cap over a pocket), grad p^n
+  // is the grains' pressure gradient, and as a force on the light fluid left there it is up
+  // to 10^5 times its weight. The implicit stress spread that kick into the grains next to the
+  // face before the projection could take it back, and left it there as a vortex: that is how
+  // the 12 cm sine rollwave ran away (docs/twod-validation.md §10, last subsection). So where a
+  // face has lost mass the solve below carries the acceleration p^n gave, grad p^n / rho^n, i.e.
+  // the force times rho^{n+1} / rho^n, and the rest, (1/rho^{n+1} - 1/rho^n) grad p^n, is added to
+  // u* after it, unspread; u* then holds the whole dt grad p^n / rho^{n+1} of the incremental
+  // projection, as before, and the predictor differs from the former one only by what the
+  // stress does to that rest. Where a face has gained mass the force stays: the light fluid's
+  // pressure gradient times rho^{n+1} / rho^n would be the same kick on the grains now there,
+  // spread the same way (a coarse saturated rollwave then ran at four times its flux). Where
+  // rho is unchanged the factor is 1 exactly and the rest 0, so nothing changes there.
+  const bool have_before = pressure_acceleration_ &&
+                           props.rho_u_before.size() == props.rho_u.size() &&
+                           props.rho_w_before.size() == props.rho_w.size();
+  auto share = [](double rho, double rho_before) {
+    return rho < rho_before ? rho / rho_before : 1.0;
+  };
+  auto share_u = [&](std::size_t c) {
+    return have_before ? share(props.rho_u[c], props.rho_u_before[c]) : 1.0;
+  };
+  auto share_w = [&](std::size_t c) {
+    return have_before ? share(props.rho_w[c], props.rho_w_before[c]) : 1.0;
+  };
   const double inv_dt = 1.0 / dt;
   parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.u_index(i, k);
       b_[r] = props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c] + gx_) -
-              g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
+              share_u(c) * g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];
     }
@@ -102,7 +132,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       const std::size_t c = g.at(i, k);
       const int r = op_.w_index(i, k);
       b_[r] = props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
-              g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
+              share_w(c) * g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
     }
   });
@@ -175,6 +205,26 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) w_star[g.at(i, k)] = x_[op_.w_index(i, k)];
   });
+  if (have_before) {  // the rest of dt grad p^n / rho^{n+1}, where rho has changed (see above)
+    auto rest = [&share, dt](double rho, double rho_before, double dp_over_h) {
+      return rho < rho_before ? dt * (1.0 - share(rho, rho_before)) / rho * dp_over_h : 0.0;
+    };
+    parallel_for(nz, true, [&](int k) {
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t c = g.at(i, k);
+        u_star[c] -=
+            rest(props.rho_u[c], props.rho_u_before[c], (s.p[c] - s.p[g.at(i - 1, k)]) * ix);
+      }
+    });
+    parallel_for(nz - 1, true, [&](int k_from_1) {
+      const int k = k_from_1 + 1;
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t c = g.at(i, k);
+        w_star[c] -=
+            rest(props.rho_w[c], props.rho_w_before[c], (s.p[c] - s.p[g.at(i, k - 1)]) * iz);
+      }
+    });
+  }
   for (int i = 0; i < nx; ++i) w_star[g.at(i, nz)] = w_star[g.at(i, nz - 1)];  // dw/dz = 0
   return iterations;
 }

@@ -61,9 +61,9 @@
 
 namespace granbench::linear2d {
 
-// The light fluid of the 2D solver. The defaults repeat twod::Rheology's rho_light, eta_light
-// and the default lid Lz = 2 h0 (analysis does not depend on twod; the CLI takes its defaults
-// from twod::Rheology itself).
+// The light fluid of the 2D solver. The member defaults are the paper's air and the default lid
+// Lz = 2 h0, not the solver's light fluid: analysis does not depend on twod, so the CLI passes
+// twod::Rheology's rho_light and eta_light itself.
 struct LightLayer {
   double rho_l = 1.5;       // density [kg m^-3], > 0
   double eta_l = 1e-3;      // viscosity [Pa s], > 0

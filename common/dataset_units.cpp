@@ -86,6 +86,7 @@ const std::map<std::string, DatasetDoc>& by_name() {
       {"max_speed", {"m/s", "largest speed in the domain"}},
       {"illposed_fraction", {"1", "fraction of granular cells where the flow is ill posed"}},
       {"rms_log10_I", {"1", "root-mean-square of log10 I over the layer"}},
+      {"both_flowing", {"1", "1 where both runs still flow (some bulk row's mean |u| > 1e-3 m/s)"}},
       {"Lx", {"m", "domain length (one wavelength)"}},
       {"k_hat", {"1", "dimensionless wavenumber 2 pi h0 / Lx"}},
       {"lambda_hat_re", {"1", "dimensionless growth rate Re(lambda) h0 / u_mean"}},

@@ -13,8 +13,16 @@ int bulk_cells(int nz, double Lz, double h0) {
   return std::clamp(int(std::floor((h0 - dz) / dz + 1e-9)), 0, nz);
 }
 
-GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecord& fine,
-                               double h0) {
+bool is_flowing(const LayerRunRecord& run, std::size_t n, double h0, double flowing_speed) {
+  if (n >= run.u_profile.size()) return false;
+  const int bulk = bulk_cells(run.nz, run.Lz, h0);
+  for (int k = 0; k < bulk; ++k)
+    if (std::abs(run.u_profile[n][k]) > flowing_speed) return true;
+  return false;
+}
+
+GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecord& fine, double h0,
+                               double flowing_speed) {
   if (coarse.nz <= 0 || fine.nz % coarse.nz != 0 ||
       std::abs(fine.Lz - coarse.Lz) > 1e-12 * coarse.Lz)
     throw std::invalid_argument("grid_dependence: the fine grid must refine the coarse one in z");
@@ -37,6 +45,8 @@ GridDependence grid_dependence(const LayerRunRecord& coarse, const LayerRunRecor
     out.t.push_back(coarse.t[n]);
     out.rms_log10_I.push_back(count > 0 ? std::sqrt(sum / count)
                                         : std::numeric_limits<double>::quiet_NaN());
+    out.both_flowing.push_back(is_flowing(coarse, n, h0, flowing_speed) &&
+                               is_flowing(fine, n, h0, flowing_speed));
   }
   return out;
 }

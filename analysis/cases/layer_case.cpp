@@ -184,7 +184,8 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
       out.grid_dependence.emplace_back(curve, d);
       nlohmann::json series = nlohmann::json::array();
       for (double v : d.rms_log10_I) series.push_back(finite_or_null(v));
-      gd[mine[0]->label + "_vs_" + mine[r]->label] = {{"t", d.t}, {"rms_log10_I", series}};
+      gd[mine[0]->label + "_vs_" + mine[r]->label] = {
+          {"t", d.t}, {"rms_log10_I", series}, {"both_flowing", d.both_flowing}};
     }
   }
 
@@ -299,6 +300,8 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
     out.create_group(g);
     out.write(g + "/t", d.t);
     out.write(g + "/rms_log10_I", d.rms_log10_I);
+    out.write(g + "/both_flowing",
+              std::vector<std::int64_t>(d.both_flowing.begin(), d.both_flowing.end()));
     out.attribute(g, "curve", curve);
   }
   out.close();

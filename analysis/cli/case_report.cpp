@@ -40,6 +40,14 @@ void print_summary(const std::string& kind, const nlohmann::json& j) {
       std::cout << "  (end: "
                 << (v.back().is_null() ? std::string("-") : std::to_string(v.back().get<double>()))
                 << ")\n";
+      // The comparison that means something: while both grids still flow (grid_dependence.hpp).
+      double largest = -1.0, at = 0.0;
+      if (d.contains("both_flowing"))
+        for (std::size_t n = 0; n < v.size(); ++n)
+          if (d["both_flowing"][n].get<bool>() && v[n].is_number() && v[n].get<double>() > largest)
+            largest = v[n].get<double>(), at = d["t"][n].get<double>();
+      if (largest >= 0.0)
+        std::cout << "    largest while both grids flow: " << largest << " at t = " << at << " s\n";
     }
   }
   if (j.contains("run") && j["run"].is_object()) {

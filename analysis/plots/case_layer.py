@@ -35,6 +35,10 @@ def main(data, prefix, snapshot_time=None):
                              field=g["I_field"][:], Lx=float(g.attrs["Lx"]), Lz=float(g.attrs["Lz"])))
         gd = {name: (np.asarray(d["t"]), np.array([np.nan if v is None else v for v in d["rms_log10_I"]]))
               for name, d in summary["grid_dependence"].items()}
+        # Samples at which both grids of a pair still flow (grid_dependence.hpp): outside them a
+        # layer is stopping or at rest, and the difference measures when each grid stops.
+        flowing = {name: np.asarray(d.get("both_flowing", []), dtype=bool)
+                   for name, d in summary["grid_dependence"].items()}
 
     # Profiles: u(z) top row, I(z) bottom row; colour runs from early (light) to late (dark).
     n = len(runs)
@@ -90,7 +94,12 @@ def main(data, prefix, snapshot_time=None):
     if gd:
         fig, ax = plt.subplots(figsize=(6, 4))
         for name, (t, v) in gd.items():
-            ax.semilogy(t, v, "o-", label=name.replace("_vs_", " vs "))
+            line, = ax.semilogy(t, v, "-", label=name.replace("_vs_", " vs "))
+            both = flowing[name] if flowing[name].size == t.size else np.ones(t.size, dtype=bool)
+            ax.semilogy(t[both], v[both], "o", color=line.get_color())
+            ax.semilogy(t[~both], v[~both], "o", color=line.get_color(), mfc="none")
+        ax.plot([], [], "ko", label="both grids flowing")
+        ax.plot([], [], "ko", mfc="none", label="a grid stopping or at rest")
         ax.set_xlabel("t [s]")
         ax.set_ylabel("rms over the layer of log10(I_fine / I_coarse)")
         ax.set_title("Grid dependence of the downslope-averaged I", fontsize=10)

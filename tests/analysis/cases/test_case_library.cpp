@@ -162,6 +162,19 @@ TEST(GridDependence, ExactForKnownProfiles) {
   EXPECT_DOUBLE_EQ(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
                        .rms_log10_I[0],
                    0.0);
+  // Flowing: some bulk row's mean speed above 1e-3 m/s in both runs. Without u_profile, never.
+  EXPECT_FALSE(grid_dependence(profile_record(8, Lz, coarse), profile_record(16, Lz, fine), h0)
+                   .both_flowing[0]);
+  auto moving = [&](int nz, double u_bulk, double u_top) {
+    LayerRunRecord r = profile_record(nz, Lz, std::vector<double>(nz, 1e-2));
+    r.u_profile = {std::vector<double>(nz, u_top)};
+    for (int k = 0; k < bulk_cells(nz, Lz, h0); ++k) r.u_profile[0][k] = u_bulk;
+    return r;
+  };
+  EXPECT_TRUE(grid_dependence(moving(8, 2e-3, 0.0), moving(16, -2e-3, 0.0), h0).both_flowing[0]);
+  EXPECT_FALSE(grid_dependence(moving(8, 2e-3, 0.0), moving(16, 5e-4, 0.0), h0).both_flowing[0]);
+  // Speed above the bulk (the surface rows, the light fluid) does not count.
+  EXPECT_FALSE(grid_dependence(moving(8, 2e-3, 0.0), moving(16, 0.0, 1.0), h0).both_flowing[0]);
   // Not a refinement in z: rejected.
   EXPECT_THROW(grid_dependence(profile_record(8, Lz, coarse),
                                profile_record(12, Lz, std::vector<double>(12, 1.0)), h0),

@@ -1,8 +1,8 @@
 // The paper's cases in full (ctest label `paper`, not in CI: tens of minutes), checked against
 // the paper's claims (§5.2, §6.2, §7). The thresholds are the claims, not fits to our output:
 //  - decelerating (figures 3-5): the regularised runs agree between resolutions, the Jop runs
-//    disagree more. Judged by the largest difference over the run: the layer is at rest from
-//    t ~ 0.08 s on, where the floor on |D| sets I for both curves alike (docs/paper-cases.md);
+//    disagree more. Judged by the largest difference while both grids flow: once the layer is at
+//    rest the floor on |D| sets I for both curves alike (docs/paper-cases.md);
 //  - high-speed (figure 8): the Jop runs are ill posed: they blow up or give grid-dependent flows
 //    (the two resolutions more than 0.1 decade apart in I); the regularised runs converge on the
 //    I_zeta of (6.3) (within 2 %) and agree between resolutions (within 0.01 decade);
@@ -44,8 +44,27 @@ double largest(const nlohmann::json& series) {
 
 TEST(PaperCase, DeceleratingRegularisedIsGridIndependentJopIsNot) {
   const auto j = run_case("decelerating");
-  const double jop = largest(j["grid_dependence"]["jop_64x48_vs_jop_128x96"]["rms_log10_I"]);
-  const double reg = largest(j["grid_dependence"]["low-i_64x48_vs_low-i_128x96"]["rms_log10_I"]);
+  // The largest difference between the curve's two grids while both still flow: in the few
+  // milliseconds in which a layer comes to rest its I falls four decades, so a sample there
+  // measures how far apart in time the two grids stop (both curves alike), not the rheology.
+  auto largest_while_flowing = [&](const std::string& curve) {
+    for (const auto& [key, series] : j["grid_dependence"].items()) {
+      if (key.rfind(curve + "_", 0) != 0) continue;
+      double m = 0.0;
+      int flowing = 0;
+      for (std::size_t n = 0; n < series["rms_log10_I"].size(); ++n)
+        if (series["both_flowing"][n].get<bool>() && series["rms_log10_I"][n].is_number()) {
+          m = std::max(m, series["rms_log10_I"][n].get<double>());
+          ++flowing;
+        }
+      EXPECT_GE(flowing, 10) << key;  // the layer decelerates over more than 10 samples
+      return m;
+    }
+    ADD_FAILURE() << "no grid dependence for " << curve;
+    return 0.0;
+  };
+  const double jop = largest_while_flowing("jop");
+  const double reg = largest_while_flowing("low-i");
   EXPECT_GT(jop, reg);
   EXPECT_LT(reg, 0.1);  // within a quarter of I between resolutions (0.1 decade)
 }

@@ -25,7 +25,8 @@
 // is never assembled.
 // Boundaries: at the bed u* ghost = 2 u_bed - u* (gamma = 2 (u - u_bed)/dz on a half volume; u_bed
 // = 0 unless the grid moves) and w = 0; at the top
-// du/dz = 0, with the top w (and its dw/dx in tau_xz) lagged at w^n.
+// du/dz = 0, with the top w (and its dw/dx in tau_xz) lagged at w^n; the top face's w* takes the
+// face below's tendencies and its own pressure force, to p = 0 at z = Lz (end of predict()).
 // The pressure gradient and gravity sit on the same faces with the same rho as in the projection
 // (balanced force), so a hydrostatic p^n cancels gravity exactly.
 #include "twod/viscous_step.hpp"
@@ -225,7 +226,21 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       }
     });
   }
-  for (int i = 0; i < nx; ++i) w_star[g.at(i, nz)] = w_star[g.at(i, nz - 1)];  // dw/dz = 0
+  // The top face: its own momentum balance, with the tendencies of the face below (dw/dz = 0 in
+  // viscous stress, advection and gravity) but its own pressure force, from p = 0 at z = Lz:
+  //   w*_top = w^n_top + (w*_below - w^n_below) + dt (a_top - a_below),  a = -grad p^n / rho.
+  // The projection corrects only the increment (dp = 0 at the top), so the whole pressure is
+  // tied to 0 at the lid only if the predictor carries grad p^n there. Copying w*_below instead
+  // left the top cell's pressure to drift with the flow: the wave's pressure in the light fluid
+  // stayed uniform up to the lid instead of falling to 0 there, and the heavier light fluid cost
+  // 19 times its theory (docs/twod-validation.md §5). The hydrostatic fluid has a_top = a_below.
+  for (int i = 0; i < nx; ++i) {
+    const std::size_t top = g.at(i, nz), below = g.at(i, nz - 1);
+    const double p_top_cell = s.p[g.at(i, nz - 1)], p_next = s.p[g.at(i, nz - 2)];
+    const double accel_top = p_top_cell / (props.rho_w[top] * 0.5 * g.dz);
+    const double accel_below = -(p_top_cell - p_next) / (props.rho_w[below] * g.dz);
+    w_star[top] = s.w[top] + (w_star[below] - s.w[below]) + dt * (accel_top - accel_below);
+  }
   return iterations;
 }
 

@@ -49,6 +49,10 @@ TEST(TwoDInterrupt, CtrlCKeepsTheOutputWritesACheckpointAndTheRunRestarts) {
   EXPECT_EQ(k["status"], "completed");
   EXPECT_NEAR(k["t_reached"].get<double>(), t_end, 1e-9);
   EXPECT_GT(k["steps"].get<long>(), j["steps"].get<long>());  // counted from the first run on
-  EXPECT_LT(std::abs(k["mass_error"].get<double>()), 1e-12);
+  // The granular volume moves by clipping f to [0, 1] at the projection's tolerance, in jumps of
+  // up to 1.3e-12 within a sample; over the first 4 s of this run it reaches 1.1e-12 and 1.6e-12
+  // (before and after the open top's pressure fix of 3 December), and where the interrupt lands
+  // depends on the machine's speed. A restart that lost or doubled one cell would be off by 2e-3.
+  EXPECT_LT(std::abs(k["mass_error"].get<double>()), 1e-11);
   fs::remove_all(dir);
 }

@@ -6,8 +6,8 @@
 // cell below's: linear to 0 at the lid, half a cell above the top centre. Before, the predictor
 // copied the face below's velocity, pressure force included; the top cell's pressure then
 // drifted with the flow, the wave's pressure stayed uniform up to the lid (ratio 0.99 here, at 35
-// times the present value), and the heavier light fluid (0.15 kg/m^3, 1e-4 Pa s) cost 19 times its
-// theory's growth (docs/twod-validation.md §5).
+// times the present value), and the heavier light fluid (0.15 kg/m^3, 1e-4 Pa s) cost the growth 19
+// times what its theory says (docs/twod-validation.md §5).
 #include <gtest/gtest.h>
 
 #include <cmath>

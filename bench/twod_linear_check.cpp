@@ -16,10 +16,9 @@
 //     rheology=mui|newton nu=<m^2/s> zeta=28.5 h0=0.004 Lx=0.08 Lz=2 (in h0) nx=160 nz=32
 //     a0=2e-4 t_end=1 dt_out=<s> t_fit0=0 modes=2 seed=eigen|sine N=32
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
-//     frame=0 (grid speed / base surface speed) vtol=1e-8 ptol=1e-10 (viscous, projection)
-//     cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1 row_shear=1
-//     interface_p=cell|extrapolated
-//     (defaults: the solver's, twod/parameters.hpp)
+//     frame=0 (grid speed / base surface speed) vtol=1e-4 ptol=1e-10 (viscous: relative to the
+//     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
+//     row_shear=1 interface_p=cell|extrapolated (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
 //     layer=<m> fn= fs= fq=   theory with eta_n, eta_s, q scaled in a surface layer

@@ -68,6 +68,8 @@ class SpdSolver {
   // Solve A x = b; x holds the initial guess on entry. Returns the PCG iterations used.
   int solve(const SpMat& A, const Eigen::VectorXd& b, Eigen::VectorXd& x);
   const SolveStats& stats() const { return stats_; }
+  // The relative residual of the next solves (the constructor's until set).
+  void set_tolerance(double tolerance) { tol_ = tolerance; }
   // The lines of the LineRelaxation preconditioner (row indices along each grid column).
   void set_lines(std::vector<std::vector<int>> lines) { lines_ = std::move(lines); }
 

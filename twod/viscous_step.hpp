@@ -35,6 +35,9 @@ class ViscousStep {
   }
 
  private:
+  // The velocity of f (u-faces, interior w-faces) in the solve's ordering of unknowns.
+  void as_unknowns(const Fields& f, Eigen::VectorXd& v) const;
+
   Grid g_;
   double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
   LinearSolverKind kind_;
@@ -47,7 +50,7 @@ class ViscousStep {
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners
   SpdSolver solver_;
   PcgWorkspace work_;                            // conjugate-gradient vectors, reused across steps
-  Eigen::VectorXd b_, x_, x_old_, y_;            // x_old_: u^n as solver unknowns
+  Eigen::VectorXd b_, x_, x_old_, y_, un_;       // x_old_: the linearisation's u; un_: u^n
   std::vector<double> lagged_c_, lagged_n_;      // eta - eta_m at cells and corners
   std::vector<double> implicit_c_, implicit_n_;  // eta_m: the implicit part of the stress
   Eigen::VectorXd increment_;  // u* - u^n of the last predict (empty before the first)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "analysis/cli/cli_common.hpp"
+#include "analysis/comparison/chute_case.hpp"
 
 namespace granbench::cli {
 
@@ -14,7 +15,7 @@ struct CompareOptions {
   FlowOptions flow;
   OutputOptions output;
   double Lx = 0.08;
-  double a0 = 2e-5;
+  double a0 = ChuteCase{}.a0;
   bool paper = false;
   std::string init = "eigenmode";
   double t_end = 2.0;

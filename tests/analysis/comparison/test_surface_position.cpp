@@ -2,11 +2,16 @@
 // theory's surface is a line, the grid's is a fill fraction f of one row. With the surface row's
 // hydrostatic pressure force and the shear spacing at the corner below it (the defaults,
 // twod/surface_row_pressure.cpp and twod/properties.cpp) the growth of the §7 wave (28.5 deg,
-// h0 = 4 mm, Lx = 8 cm, eigenmode seed) varies by 3.1 % between f = 0, 1/4, 1/2, 3/4 at 16 cells
+// h0 = 4 mm, Lx = 8 cm, eigenmode seed) varies by 2.95 % between f = 0, 1/4, 1/2, 3/4 at 16 cells
 // per h0 (80 x 32, cfl 0.4), against 12.8 % without the shear spacing and 29 % with the standard
 // MAC pressure force (docs/twod-validation.md §4). At the default 32 cells per h0 it is 2.2 %
 // (4.9 % without), short of the 2 % issue 12 asks for; this test runs the coarse grid because
 // the dependence is largest and cheapest to see there, and fails if either fix is undone.
+// The seed is 0.02 mm here (0.08 of a cell), the former default of every command. At the present
+// default, 1 um, the wave is linear for the interface cells too, and the dependence is larger:
+// 9.7 % at 16 cells per h0 (0.961, 1.063, 1.045, 1.031 1/s at f = 0, 1/4, 1/2, 3/4; the surface
+// on a face is the outlier) and 3.3 % at 32 (1.0503, 1.0853, 1.0723, 1.0602). A finite seed
+// averages the response over the fills its surface sweeps (docs/twod-validation.md §2).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,10 +28,11 @@ using namespace granbench;
 
 namespace {
 // Growth rate of the seeded wave: a two-wave matrix-pencil fit of the fundamental's Fourier
-// coefficient over [0.15, 0.6] s (after the seed's transient, well inside the linear regime at
-// a0 = 0.02 mm), taking the wave nearest the theory's phase speed.
+// coefficient over [0.15, 0.6] s (after the seed's transient), taking the wave nearest the
+// theory's phase speed.
 double growth_with_surface_at(double fill, double theory_speed) {
   ChuteCase c;
+  c.a0 = 2e-5;
   c.t_end = 0.6;
   c.dt_out = 0.005;
   TwodSettings s;
@@ -61,6 +67,6 @@ TEST(SurfacePosition, GrowthHardlyDependsOnWhereTheSurfaceSitsInItsCell) {
   const auto [lo, hi] = std::minmax_element(growth.begin(), growth.end());
   const double spread = (*hi - *lo) / growth[2];
   std::cout << "spread " << 100 * spread << " % (theory " << t.exact_2d.growth_rate << " 1/s)\n";
-  EXPECT_LT(spread, 0.04);  // 3.1 % measured; 12.8 % without the shear spacing
+  EXPECT_LT(spread, 0.04);  // 2.95 % measured; 12.8 % without the shear spacing
   for (double g : growth) EXPECT_NEAR(g, t.exact_2d.growth_rate, 0.10 * t.exact_2d.growth_rate);
 }

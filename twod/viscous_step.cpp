@@ -192,8 +192,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   // tolerance: at cfl 0.1 with a 2.5e-6 m seed most steps took the extrapolated initial guess
   // unsolved and the section 7 growth came out 4 % high (docs/twod-validation.md §2). The floor
   // (a round-off level of ||b||) ends the iteration where the old velocity is already a solution.
-  as_unknowns(s, un_);
-  op_.apply(un_, y_);
+  // (u^n as unknowns: x_old_ already holds it when the stress is linearised about s)
+  if (!(tangent_ && about == nullptr)) as_unknowns(s, un_);
+  op_.apply(tangent_ && about == nullptr ? x_old_ : un_, y_);
   parallel_difference(b_, y_, y_);
   const double change = std::sqrt(deterministic_dot(y_, y_));
   const double b_norm = std::sqrt(deterministic_dot(b_, b_));

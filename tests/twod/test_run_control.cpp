@@ -53,11 +53,19 @@ TEST(RunControl, RunawayVelocityIsReportedWithTimeAndPlace) {
 }
 
 namespace {
+// A scratch file named after the running test: ctest runs each test in its own process, two at a
+// time, and the two restart tests writing one fixed name made each other fail now and then.
+std::string scratch_path(const std::string& stem) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return (std::filesystem::temp_directory_path() /
+          (stem + "_" + info->test_suite_name() + "_" + info->name() + ".h5"))
+      .string();
+}
+
 void expect_restart_continues_identically(const Case& c) {
   Solver a(c.grid, c.params, make_initial_state(c.grid, c.ic, c.params));
   a.advance_to(0.01);
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "granbench_twod_checkpoint_test.h5").string();
+  const std::string path = scratch_path("granbench_twod_checkpoint_test");
   SurfaceSeries series = SurfaceSeries::uniform_grid(c.grid.Lx, c.grid.nx, 0.004);
   write_checkpoint(path, a, series);
   const Checkpoint cp = read_checkpoint(path);
@@ -152,8 +160,7 @@ TEST(TwodRun, StopFlagEndsTheRunAtTheNextSampleAndRestartContinuesTheGrid) {
 
   // The flag is raised between samples (at the snapshot at 0.025 s): the run goes on to the
   // sample at 0.03 s and stops there.
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "granbench_twod_run_test.h5").string();
+  const std::string path = scratch_path("granbench_twod_run_test");
   std::atomic<bool> stop{false};
   int checkpoints = 0;
   RunHooks hooks;

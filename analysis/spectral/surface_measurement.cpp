@@ -133,7 +133,11 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
   double best_residual = INFINITY;
   std::size_t best_i = i0, best_j = i0 + n_min - 1;
   std::string short_window;
+  std::optional<Window> chosen;  // the longest clean window so far (rule 4)
+  std::string stall;             // why the search stopped at a stall (rule 6), if it did
   for (std::size_t i = i0; i + n_min <= end; i += start_stride) {
+    // A window from here cannot be longer than the one chosen: stop.
+    if (chosen && end - 1 - i <= chosen->last - chosen->first) break;
     // Rule 4: from this start, the ends advance until a clean window is long enough (rule 5), and
     // on while the fit stays clean; the first end after that with a larger residual stops them.
     std::optional<Window> w;
@@ -159,35 +163,40 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
       if (j == end - 1) break;  // the stride always ends on the last usable sample
     }
     if (!w) continue;
-    const auto& modes = w->modes;
-    const std::size_t seeded = w->seeded;
-    const double sigma = modes[seeded].growth_rate;
-    // Rule 6: a stall.
+    const double sigma = w->modes[w->seeded].growth_rate;
+    // Rule 6: a stall ends the search; what was found before it stands.
     if (i > i0) {
       const double efolds = std::log(std::abs(hk[i]) / std::abs(hk[i0]));
       const double rate_before = efolds / (s.t[i] - s.t[i0]);
       if (efolds >= 0.5 && sigma < 0.5 * rate_before) {
-        m.reason = "stall: |h_k| grew " + format(efolds) + " e-folds (" + format(rate_before) +
-                   " 1/s) over [" + format(s.t[i0]) + ", " + format(s.t[i]) +
-                   "] s without a clean fit, and the first clean window after it, [" +
-                   format(s.t[i]) + ", " + format(s.t[w->last]) + "] s, grows at only " +
-                   format(sigma) + " 1/s";
-        return m;
+        stall = "stall: |h_k| grew " + format(efolds) + " e-folds (" + format(rate_before) +
+                " 1/s) over [" + format(s.t[i0]) + ", " + format(s.t[i]) +
+                "] s without a clean fit, and the first clean window after it, [" + format(s.t[i]) +
+                ", " + format(s.t[w->last]) + "] s, grows at only " + format(sigma) + " 1/s";
+        break;
       }
     }
-    m.modes = modes;
-    m.seeded = seeded;
-    m.growth_rate = sigma;
-    m.phase_speed = modes[seeded].phase_speed;
-    m.first = w->first;
-    m.last = w->last;
-    m.t_first = s.t[w->first];
-    m.t_last = s.t[w->last];
-    m.relative_residual = w->fit.relative_residual;
-    m.singular_values = w->fit.singular_values;
+    if (!chosen || w->last - w->first > chosen->last - chosen->first) chosen = std::move(w);
+  }
+  if (chosen) {
+    m.modes = chosen->modes;
+    m.seeded = chosen->seeded;
+    m.growth_rate = m.modes[m.seeded].growth_rate;
+    m.phase_speed = m.modes[m.seeded].phase_speed;
+    m.first = chosen->first;
+    m.last = chosen->last;
+    m.t_first = s.t[chosen->first];
+    m.t_last = s.t[chosen->last];
+    m.relative_residual = chosen->fit.relative_residual;
+    m.singular_values = chosen->fit.singular_values;
     std::vector<double> log_amplitude(hk.size());
-    for (std::size_t n = w->first; n <= w->last; ++n) log_amplitude[n] = std::log(std::abs(hk[n]));
-    m.log_amplitude_r2 = fit_line(s.t, log_amplitude, w->first, w->last).r2;
+    for (std::size_t n = chosen->first; n <= chosen->last; ++n)
+      log_amplitude[n] = std::log(std::abs(hk[n]));
+    m.log_amplitude_r2 = fit_line(s.t, log_amplitude, chosen->first, chosen->last).r2;
+    return m;
+  }
+  if (!stall.empty()) {
+    m.reason = stall;
     return m;
   }
   m.reason = "no clean window: after t = " + format(s.t[i0]) +

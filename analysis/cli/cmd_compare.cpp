@@ -40,7 +40,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   if (chute.a0 >= chute.h0) throw UsageError("--a0: must be below h0; valid range (0, h0)");
   const GridPreset res = grid_preset(o.resolution);
   TwodSettings twod;
-  twod.nx = o.nx > 0 ? o.nx : res.twod_nx;
+  twod.nx = res.twod_nx;
+  twod.nx = o.nx > 0 ? o.nx : twod.cells_along(chute.Lx);  // the preset's, as sweep's points
   twod.nz = o.nz > 0 ? o.nz : res.twod_nz;
   twod.viscosity_passes = o.viscosity_passes;
   twod.frame_fraction = o.twod_frame;

@@ -20,7 +20,8 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
   sub.add_option("--dt-out", o.dt_out, "sampling interval [s], > 0 (default: automatic)")
       ->check(positive());
   sub.add_option("--resolution", o.resolution,
-                 "grids {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / 512}")
+                 "grids at Lx = 8 cm {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / "
+                 "512}; at another Lx, at least these 2D cells along x and at most their dx")
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.

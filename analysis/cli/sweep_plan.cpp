@@ -78,7 +78,8 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
                  "run length per point [s], > 0; default: max(4 periods, 0.5/|growth|), <= 5 s")
       ->check(positive());
   sub.add_option("--resolution", o.resolution,
-                 "2D grid of --model twod|both {coarse: 80x32, default: 160x64, fine: 320x128}")
+                 "2D grid of --model twod|both at Lx = 8 cm {coarse: 80x32, default: 160x64, fine: "
+                 "320x128}; at another Lx, at least these cells along x and at most their dx")
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   sub.add_option("--twod-frame", o.twod_frame,
@@ -149,7 +150,9 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});
-    title << ", 2D grid " << spec.twod_settings.nx << "x" << spec.twod_settings.nz;
+    title << ", 2D grid " << spec.twod_settings.nx << "x" << spec.twod_settings.nz
+          << " at 8 cm (at least " << spec.twod_settings.nx << " cells along x, dx at most "
+          << 1e3 * TwodSettings::reference_length / spec.twod_settings.nx << " mm)";
   }
   plan.title = title.str();
   return plan;

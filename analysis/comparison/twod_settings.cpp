@@ -48,7 +48,11 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           {"viscosity_passes", double(s.viscosity_passes)},
           {"consistent_momentum", s.consistent_momentum ? 1.0 : 0.0},
           {"chebyshev_N", double(s.chebyshev_N)},
-          {"frame_fraction", s.frame_fraction}};
+          {"frame_fraction", s.frame_fraction},
+          // How nx becomes the cells along another length (cells_along): 2, at least nx cells and
+          // at most their dx at 8 cm (since 3 December); a sweep file without it kept the dx
+          // alone, and its points are not resumed on the new grids.
+          {"nx_rule", 2.0}};
 }
 
 }  // namespace granbench

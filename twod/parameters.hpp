@@ -88,8 +88,9 @@ struct SolverParams {
   double dt_growth = 1.1;           // largest ratio dt_{n+1}/dt_n
   double solver_tolerance = 1e-10;  // relative residual of the projection (sets div u, mass)
   // The viscous solve stops at ||b - A u*|| <= viscous_tolerance ||b - A u^n||: relative to the
-  // change the step makes, not to ||b|| (which holds rho u^n / dt and hid a small wave's change;
-  // viscous_step.cpp).
+  // change the step makes, not to ||b|| (which holds rho u^n / dt and hid a small wave's change),
+  // but never looser than 1e-8 ||b|| (a large change, a splash; viscous_stop_tolerance in
+  // viscous_step.hpp).
   double viscous_tolerance = 1e-4;
   LinearSolverKind viscous_solver = LinearSolverKind::LineRelaxation;
   LinearSolverKind pressure_solver = LinearSolverKind::Multigrid;

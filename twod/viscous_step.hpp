@@ -12,6 +12,11 @@
 
 namespace granbench::twod {
 
+// The relative residual ||b - A u*|| / ||b|| at which the predictor's solve stops, for the
+// SolverParams::viscous_tolerance `tolerance`, the change ||b - A u^n|| and ||b||: tolerance
+// times the change, but never looser than 1e-8 ||b|| nor tighter than 1e-12 ||b||.
+double viscous_stop_tolerance(double tolerance, double change, double b_norm);
+
 class ViscousStep {
  public:
   ViscousStep(const Grid& g, const SolverParams& params);

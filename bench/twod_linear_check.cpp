@@ -18,6 +18,7 @@
 //     eta_max=2 eta_min=1e-3 D_min=1e-6 rho_light= eta_light= mixing=arithmetic|harmonic
 //     frame=0 (grid speed / base surface speed) vtol=1e-4 ptol=1e-10 (viscous: relative to the
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
+//     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
 //     row_shear=1 interface_p=cell|extrapolated (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
@@ -162,6 +163,8 @@ int main(int argc, char** argv) {
   params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;
   params.hydrostatic_viscosity_pressure =
       a.num("hydro_p", params.hydrostatic_viscosity_pressure ? 1 : 0) != 0;
+  params.extrapolate_dynamic_viscosity_pressure =
+      a.num("extrap_p", params.extrapolate_dynamic_viscosity_pressure ? 1 : 0) != 0;
   params.surface_row_pressure = a.num("row_p", params.surface_row_pressure ? 1 : 0) != 0;
 
   const Material& mat = rh.material;

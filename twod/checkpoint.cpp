@@ -120,6 +120,12 @@ void write_checkpoint(const std::string& path, const Solver& solver, const Surfa
     out.write("/warm_start/previous_u", w.previous_u);
     out.write("/warm_start/previous_w", w.previous_w);
   }
+  if (const DynamicPressureHistory& d = w.dynamic_pressure; d.levels > 0) {
+    out.write("/warm_start/dynamic_pressure_older", d.older);
+    out.write("/warm_start/dynamic_pressure_old", d.old);
+    const double record[3] = {d.t_older, d.t_old, double(d.levels)};
+    out.write("/warm_start/dynamic_pressure_times_levels", std::span<const double>(record, 3));
+  }
   out.write("/warm_start/previous_dt", std::span<const double>(&w.previous_dt, 1));
   if (!snapshot_times.empty()) out.write("/run/snapshot_times", snapshot_times);
   for (const auto& [name, v] : checkpoint_physics(solver.params()))
@@ -164,6 +170,16 @@ Checkpoint read_checkpoint(const std::string& path) {
   optional("increment_w", c.warm_start.increment_w);
   optional("previous_u", c.warm_start.previous_u);
   optional("previous_w", c.warm_start.previous_w);
+  DynamicPressureHistory& history = c.warm_start.dynamic_pressure;
+  optional("dynamic_pressure_older", history.older);
+  optional("dynamic_pressure_old", history.old);
+  std::vector<double> record;
+  optional("dynamic_pressure_times_levels", record);
+  if (record.size() == 3) {
+    history.t_older = record[0];
+    history.t_old = record[1];
+    history.levels = int(record[2]);
+  }
   std::vector<double> dt;
   optional("previous_dt", dt);
   if (!dt.empty()) c.warm_start.previous_dt = dt.at(0);

@@ -103,6 +103,11 @@ struct SolverParams {
   // Each lag is a first-order time error of the growth rate (docs/twod-validation.md).
   bool viscosity_tangent = true;
   bool hydrostatic_viscosity_pressure = true;
+  //   extrapolate_dynamic_viscosity_pressure: p* also takes the dynamic rest of p, extrapolated
+  //     to t^{n+1} along its slope over the last two steps (viscosity_pressure.hpp; false: the
+  //     dynamic rest lagged one step, a first-order error, 0.0028 s^-1 of the §7 growth at cfl
+  //     0.4).
+  bool extrapolate_dynamic_viscosity_pressure = true;
   // true (default): the u-faces of a partly filled surface row feel the hydrostatic pressure force
   // on the grains they hold, not the half-slope force of the interface cells' centroid pressure
   // (surface_row_pressure.cpp). It cuts the growth rate's dependence on where the surface sits in
@@ -130,9 +135,11 @@ struct SolverParams {
   // changes.
   bool predictor_pressure_acceleration = true;
   // The velocity that moves the interface (and carries the momentum's mass fluxes): true: the
-  // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are;
-  // false: u^n, a first-order lag of the surface's kinematic condition.
-  bool interface_midstep_velocity = false;
+  // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are (the
+  // default since eta's dynamic pressure is extrapolated too: with that alone the interface's
+  // lag is left uncancelled, and the growth falls as the step shrinks; docs/twod-validation.md
+  // §2); false: u^n, a first-order lag of the surface's kinematic condition.
+  bool interface_midstep_velocity = true;
   bool advect_momentum = true;
   // Time integration of the velocity form (consistent_momentum = false): true = second-order
   // Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps

@@ -98,6 +98,7 @@ WarmStart Solver::warm_start() const {
   w.increment_w = increment_w_;
   w.previous_u = previous_.u;
   w.previous_w = previous_.w;
+  w.dynamic_pressure = dynamic_pressure_;
   return w;
 }
 
@@ -114,6 +115,7 @@ void Solver::set_warm_start(const WarmStart& w) {
   increment_w_ = w.increment_w;
   previous_.u = w.previous_u;
   previous_.w = w.previous_w;
+  dynamic_pressure_ = w.dynamic_pressure;
 }
 
 double Solver::step(double dt_limit) {
@@ -148,14 +150,19 @@ double Solver::step(double dt_limit) {
   }
   if (params_.hydrostatic_viscosity_pressure) h_after_ = surface_heights(g_, s_.f);
   // 2. properties at the new level: eta from u^n and p^n, plus the hydrostatic change of the
-  //    surface's move (viscosity_pressure.cpp); the surface row's hydrostatic pressure force
+  //    surface's move and the dynamic pressure's extrapolated change (viscosity_pressure.cpp);
+  //    the surface row's hydrostatic pressure force
   //    (surface_row_pressure.cpp)
   // (the densities p^n was balanced against, for the predictor: viscous_step.cpp)
   props_.rho_u_before = props_.rho_u;
   props_.rho_w_before = props_.rho_w;
   update_densities(g_, s_.f, params_.rheology, props_);
   if (params_.hydrostatic_viscosity_pressure) {
-    viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, p_eta_);
+    if (params_.extrapolate_dynamic_viscosity_pressure)
+      viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, s_.t, dt, dynamic_pressure_,
+                         p_eta_);
+    else
+      viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, p_eta_);
     update_viscosity(g_, s_, p_eta_, model_, props_);
   } else
     update_viscosity(g_, s_, model_, props_);

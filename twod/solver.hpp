@@ -15,6 +15,7 @@
 #include "twod/parameters.hpp"
 #include "twod/projection.hpp"
 #include "twod/properties.hpp"
+#include "twod/viscosity_pressure.hpp"
 #include "twod/viscous_step.hpp"
 #include "twod/vof_advection.hpp"
 
@@ -41,6 +42,8 @@ struct WarmStart {
   std::vector<double> increment_u, increment_w;
   // u^{n-1} (interface_midstep_velocity)
   std::vector<double> previous_u, previous_w;
+  // The dynamic pressure of the last two levels (extrapolate_dynamic_viscosity_pressure)
+  DynamicPressureHistory dynamic_pressure;
 };
 
 struct RunStatistics {
@@ -112,9 +115,10 @@ class Solver {
   std::vector<double> adv_cons_u_, adv_cons_w_;  // the consistent operator at level n
   std::vector<double> adv_u_old_, adv_w_old_;    // A^n kept for the next step (advection_ab2)
   std::vector<double> h_before_, h_after_;       // column heights before and after the VOF step
-  std::vector<double> p_eta_;    // the pressure eta is evaluated at (viscosity_pressure.hpp)
-  std::vector<double> force_u_;  // surface-row pressure correction per u-face
-  double dt_previous_ = 0.0;     // the last step taken (shortened or not)
+  std::vector<double> p_eta_;  // the pressure eta is evaluated at (viscosity_pressure.hpp)
+  DynamicPressureHistory dynamic_pressure_;  // extrapolate_dynamic_viscosity_pressure
+  std::vector<double> force_u_;              // surface-row pressure correction per u-face
+  double dt_previous_ = 0.0;                 // the last step taken (shortened or not)
   // stress_bdf2: the advected velocity u~ of this step, and delta^n = u^n - u~^{n-1}, the last
   // step's non-advective increment (empty before the first step)
   std::vector<double> advected_u_, advected_w_, increment_u_, increment_w_;

@@ -15,4 +15,21 @@ void viscosity_pressure(const Grid& g, const SolverParams& params, const std::ve
                         const std::vector<double>& h_before, const std::vector<double>& h_after,
                         std::vector<double>& p_eta);
 
+// The dynamic part d = p - p_hs(h) of the pressure at the last two time levels, kept to
+// extrapolate it to the new level (SolverParams::extrapolate_dynamic_viscosity_pressure).
+struct DynamicPressureHistory {
+  std::vector<double> older, old;  // d^{n-2}, d^{n-1}
+  double t_older = 0.0, t_old = 0.0;
+  int levels = 0;  // how many of the two are set
+};
+
+// As above, plus the dynamic part extrapolated to t + dt along its slope over two steps,
+//   p_eta = p_hs(h^{n+1}) + d^n + dt (d^n - d^{n-2}) / (t^n - t^{n-2}),
+// which is second order and, unlike the slope over one step, does not amplify a pressure that
+// alternates from step to step. Shifts the history to level n.
+void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
+                        const std::vector<double>& h_before, const std::vector<double>& h_after,
+                        double t, double dt, DynamicPressureHistory& history,
+                        std::vector<double>& p_eta);
+
 }  // namespace granbench::twod

@@ -27,6 +27,13 @@ write the velocity field, so both measures below are built from I(x, z).
       sample, the rate d ln E / dt between samples, and the least-squares slope of ln E over
       [T1, T2] with the largest misfit of that line in ln E.
 
+  high-speed-figure FILE [FILE...] --out PNG [--window LABEL T1 T2]...
+      The figure of that measure against grid, like the paper's figure 8: ln E(t) of every run
+      in the files, Jop's curve and the regularised curve in two panels, with the least-squares
+      line over each run's window (given per run label, e.g. jop_128x32 0.07 0.25), and the
+      fitted rates against the cells across the layer in a third panel.  Also printed: each
+      run's rate and largest misfit.
+
   twod-run FILE --h0 H0 [--window T1 T2]
       A cross-check on a `granbench run --model twod` file, whose snapshots hold u, w, f and I:
       the perturbation kinetic energy per unit density,
@@ -72,15 +79,20 @@ def decelerating(paths):
             print(f"  largest P = {P[n]:.2e} decade at t = {t[n]:.3f} s")
 
 
+def energy(g, h0):
+    """E(t) of a layer case's run (high-speed above)."""
+    t, I, z = g["t"][:], g["I_field"][:], g["z"][:]
+    E = []
+    for n in range(len(t)):
+        F = I[n][full_rows(I[n]) & (z <= 0.8 * h0)]
+        m = F.mean(axis=1, keepdims=True)
+        E.append(np.mean(((F - m) / m) ** 2))
+    return t, np.array(E)
+
+
 def high_speed(path, window):
     for label, h0, g in runs(path):
-        t, I = g["t"][:], g["I_field"][:]
-        E = []
-        for n in range(len(t)):
-            F = I[n][full_rows(I[n]) & (g["z"][:] <= 0.8 * h0)]
-            m = F.mean(axis=1, keepdims=True)
-            E.append(np.mean(((F - m) / m) ** 2))
-        E = np.array(E)
+        t, E = energy(g, h0)
         print(f"{path}: {label}")
         for n in range(len(t)):
             rate = (np.log(E[n]) - np.log(E[n - 1])) / (t[n] - t[n - 1]) if n else float("nan")
@@ -91,6 +103,66 @@ def high_speed(path, window):
             misfit = np.max(np.abs(np.polyval(line, t[sel]) - np.log(E[sel])))
             print(f"  fit over [{window[0]}, {window[1]}] s ({sel.sum()} samples): "
                   f"d ln E/dt = {line[0]:.2f} 1/s, largest misfit {misfit:.2f} in ln E")
+
+
+def high_speed_figure(paths, out, windows):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    rates = {"jop": [], "regularised": []}
+    found = []  # (curve, cells across h0, path, label, t, E)
+    for path in paths:
+        for label, h0, g in runs(path):
+            curve = g.attrs["curve"]
+            curve = curve.decode() if isinstance(curve, bytes) else str(curve)
+            across = int(round(float(g.attrs["nz"]) * h0 / float(g.attrs["Lz"])))
+            size = f"{int(g.attrs['nx'])} x {int(g.attrs['nz'])}"
+            found.append((curve, across, path, label, size, *energy(g, h0)))
+    colours = {n: f"C{j}" for j, n in enumerate(sorted({r[1] for r in found}))}  # one per grid
+    for curve, across, path, label, size, t, E in sorted(found, key=lambda r: (r[0], r[1])):
+        ax = axes[0] if curve == "jop" else axes[1]
+        ax.semilogy(1e3 * t, E, lw=1.2, color=colours[across],
+                    label=f"{size} ({across} cells across h0)")
+        if label not in windows:
+            continue
+        t1, t2 = windows[label]
+        sel = (t >= t1 - 1e-9) & (t <= t2 + 1e-9)
+        a, b = np.polyfit(t[sel], np.log(E[sel]), 1)
+        misfit = np.max(np.abs(a * t[sel] + b - np.log(E[sel])))
+        ax.semilogy(1e3 * t[sel], np.exp(a * t[sel] + b), "--", color=colours[across], lw=2.2,
+                    label=f"  fit {t1:g}-{t2:g} s: {a:.0f} 1/s")
+        rates.setdefault(curve, []).append((across, a))
+        print(f"{path}: {label}  {across} cells across h0  d ln E/dt = {a:.1f} 1/s over "
+              f"[{t1}, {t2}] s ({sel.sum()} samples), largest misfit {misfit:.2f} in ln E")
+    for ax, title in zip(axes[:2], ["Jop's curve (2.12): ill posed at I = 0.99",
+                                    "regularised curve (6.3): well posed"]):
+        ax.set_xlabel("t [ms]")
+        ax.set_ylabel("E = <((I - <I>x) / <I>x)^2> over the layer below 0.8 h0")
+        ax.set_title(title)
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    ax = axes[2]
+    for curve, marker in (("jop", "o-"), ("regularised", "s--")):
+        pts = sorted(rates.get(curve, []))
+        if pts:
+            n, r = zip(*pts)
+            ax.plot(n, r, marker, label=curve)
+    ax.set_xscale("log", base=2)
+    if all(r > 0 for pts in rates.values() for _, r in pts):
+        ax.set_yscale("log")
+    else:  # a decaying run: a scale that shows the sign
+        ax.set_yscale("symlog", linthresh=10)
+    ax.set_xlabel("cells across the layer")
+    ax.set_ylabel("fitted rate of E [1/s]")
+    ax.set_title("growth of the perturbation against grid")
+    ax.legend()
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
 
 
 def fit(t, E, window):
@@ -131,6 +203,11 @@ def main():
     h = sub.add_parser("high-speed")
     h.add_argument("file")
     h.add_argument("--window", nargs=2, type=float)
+    hf = sub.add_parser("high-speed-figure")
+    hf.add_argument("files", nargs="+")
+    hf.add_argument("--out", required=True)
+    hf.add_argument("--window", nargs=3, action="append", default=[],
+                    metavar=("LABEL", "T1", "T2"))
     r = sub.add_parser("twod-run")
     r.add_argument("file")
     r.add_argument("--h0", type=float, required=True)
@@ -140,6 +217,9 @@ def main():
         decelerating(a.files)
     elif a.kind == "high-speed":
         high_speed(a.file, a.window)
+    elif a.kind == "high-speed-figure":
+        windows = {w[0]: (float(w[1]), float(w[2])) for w in a.window}
+        high_speed_figure(a.files, a.out, windows)
     else:
         twod_run(a.file, a.h0, a.window)
 

@@ -1,5 +1,6 @@
 // The decelerating and high-speed paper cases (layer_case.hpp): specification from the case
-// file, the runs (in parallel), the grid dependence, the HDF5 output and the summary.
+// file, the runs (in parallel), the grid dependence, the growth of x-dependent perturbations,
+// the HDF5 output and the summary.
 #include "analysis/cases/layer_case.hpp"
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "analysis/cases/layer_xdmf.hpp"
+#include "analysis/cases/perturbation_energy.hpp"
 #include "analysis/comparison/twod_settings.hpp"
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
@@ -200,6 +202,16 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
                      .I_zeta;
     } catch (const std::exception&) {
     }
+    // the growth of x-dependent perturbations (perturbation_energy.hpp)
+    const std::vector<double> E = perturbation_energy(r, s.h0);
+    nlohmann::json E_series = nlohmann::json::array();
+    for (double v : E) E_series.push_back(finite_or_null(v));
+    const EnergyGrowth growth = energy_growth(r.t, E);
+    nlohmann::json energy_growth_json =
+        growth.rate ? nlohmann::json{{"rate", *growth.rate},
+                                     {"window", {growth.t_from, growth.t_to}},
+                                     {"samples", growth.samples}}
+                    : nlohmann::json{{"rate", nullptr}, {"reason", growth.reason}};
     double I_lo = INFINITY, I_hi = 0.0;
     for (const auto& field : r.I_field)
       for (double v : field)
@@ -223,7 +235,9 @@ LayerCaseResult run_layer_case(const LayerCaseSpec& spec, unsigned jobs,
          {"final_illposed_fraction", r.illposed_fraction.empty()
                                          ? nlohmann::json(nullptr)
                                          : nlohmann::json(r.illposed_fraction.back())},
-         {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nlohmann::json(nullptr)}});
+         {"I_range", std::isfinite(I_lo) ? nlohmann::json{I_lo, I_hi} : nlohmann::json(nullptr)},
+         {"perturbation_energy", E_series},
+         {"energy_growth", energy_growth_json}});
   }
   out.summary = {{"case", spec.name}, {"title", spec.title},       {"resolution", spec.resolution},
                  {"h0", spec.h0},     {"angle0", spec.angle0_deg}, {"angle", spec.angle_deg},

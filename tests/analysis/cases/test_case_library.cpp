@@ -6,10 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <numbers>
 
 #include "analysis/cases/case_file.hpp"
 #include "analysis/cases/grid_dependence.hpp"
 #include "analysis/cases/layer_case.hpp"
+#include "analysis/cases/perturbation_energy.hpp"
 
 namespace granbench::cases {
 namespace {
@@ -179,6 +182,56 @@ TEST(GridDependence, ExactForKnownProfiles) {
   EXPECT_THROW(grid_dependence(profile_record(8, Lz, coarse),
                                profile_record(12, Lz, std::vector<double>(12, 1.0)), h0),
                std::invalid_argument);
+}
+
+// E of a layer whose I is known cell by cell: rows at z <= 0.8 h0 that are grains all along x
+// count, others not; a row I = m (1 + e cos(2 pi i / nx)) gives ((I - m)/m)^2 averaged = e^2 / 2.
+TEST(PerturbationEnergy, ExactForKnownFields) {
+  LayerRunRecord r;
+  r.nx = 8;
+  r.nz = 5;
+  const double h0 = 1.0;
+  r.z = {0.1, 0.3, 0.5, 0.7, 0.9};  // the last row lies above 0.8 h0 and is left out
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> field(std::size_t(r.nx) * r.nz);
+  const double e[] = {0.1, 0.2, 0.0, 0.3, 5.0};
+  for (int k = 0; k < r.nz; ++k)
+    for (int i = 0; i < r.nx; ++i)
+      field[k * r.nx + i] = 2.0 * (1.0 + e[k] * std::cos(2.0 * std::numbers::pi * i / r.nx));
+  field[3 * r.nx + 5] = nan;  // row 3 has a cell without grains: left out
+  r.I_field = {field};
+  r.t = {0.0};
+  const auto E = perturbation_energy(r, h0);
+  ASSERT_EQ(E.size(), 1u);
+  EXPECT_NEAR(E[0], (0.01 + 0.04 + 0.0) / 2.0 / 3.0, 1e-15);
+}
+
+// The growth rate of an exact exponential between the two levels, its window, and the two ways
+// of having none: never out of the noise, or too few samples in the exponential phase.
+TEST(PerturbationEnergy, GrowthRateOfTheExponentialPhase) {
+  std::vector<double> t, E;
+  for (int n = 0; n <= 100; ++n) {
+    t.push_back(0.01 * n);
+    // noise level 1e-10 until 0.2 s, then e^{50 (t - 0.2)} 1e-10, saturating at 0.1
+    E.push_back(std::min(0.1, 1e-10 * std::exp(50.0 * std::max(t.back() - 0.2, 0.0))));
+  }
+  const EnergyGrowth g = energy_growth(t, E, 1e-8, 1e-3);
+  ASSERT_TRUE(g.rate.has_value()) << g.reason;
+  EXPECT_NEAR(*g.rate, 50.0, 1e-9);
+  EXPECT_NEAR(g.t_from, 0.30, 1e-12);  // the first sample at or above 1e-8: e^{50 t'} >= 100
+  EXPECT_NEAR(g.t_to, 0.52, 1e-12);    // the last at or below 1e-3: e^{50 t'} <= 1e7
+  EXPECT_EQ(g.samples, 23);
+
+  std::vector<double> quiet(t.size(), 1e-11);
+  const EnergyGrowth none = energy_growth(t, quiet, 1e-8, 1e-3);
+  EXPECT_FALSE(none.rate.has_value());
+  EXPECT_NE(none.reason.find("never reaches"), std::string::npos) << none.reason;
+
+  std::vector<double> jump(t.size(), 1e-11);
+  for (std::size_t n = 50; n < t.size(); ++n) jump[n] = n < 52 ? 1e-6 : 1.0;
+  const EnergyGrowth short_phase = energy_growth(t, jump, 1e-8, 1e-3);
+  EXPECT_FALSE(short_phase.rate.has_value());
+  EXPECT_NE(short_phase.reason.find("only 2 samples"), std::string::npos) << short_phase.reason;
 }
 
 }  // namespace

@@ -325,6 +325,7 @@ RunStatistics Solver::statistics() const {
   RunStatistics r = stats_;
   r.volume = granular_volume(g_, s_.f);
   r.clipped_volume = vof_.clipped_volume * g_.cell_volume();
+  r.vof_substepped_steps = vof_.substepped_steps;
   r.factorisations = viscous_.stats().factorisations + projection_.stats().factorisations;
   double div = 0.0;
   for (int k = 0; k < g_.nz; ++k)

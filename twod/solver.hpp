@@ -50,9 +50,10 @@ struct RunStatistics {
   long steps = 0;
   long viscous_iterations = 0, projection_iterations = 0;
   long factorisations = 0;
-  double initial_volume = 0.0;  // granular volume at the start [m^2 per unit width]
-  double volume = 0.0;          // now
-  double clipped_volume = 0.0;  // volume touched by clipping f to [0, 1]
+  double initial_volume = 0.0;    // granular volume at the start [m^2 per unit width]
+  double volume = 0.0;            // now
+  double clipped_volume = 0.0;    // volume touched by clipping f to [0, 1]
+  long vof_substepped_steps = 0;  // steps whose interface moved in sub-steps (vof_advection.hpp)
   double dt_min = 0.0, dt_max = 0.0, dt_last = 0.0;
   double max_divergence = 0.0;  // max |div u| after the last projection [1/s]
   double mass_error() const {

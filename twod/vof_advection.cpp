@@ -127,10 +127,22 @@ void youngs_normal(const Grid& g, const std::vector<double>& f, int i, int k, do
   m2 = -((F(1, 1) + 2.0 * F(0, 1) + F(-1, 1)) - (F(1, -1) + 2.0 * F(0, -1) + F(-1, -1))) / 8.0;
 }
 
-void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
-                            const std::vector<double>& w, double dt, bool x_first,
-                            std::vector<double>& f, VofStats& stats, VofWorkspace& work,
-                            GrainFluxes* fluxes) {
+double largest_face_courant(const Grid& g, const std::vector<double>& u,
+                            const std::vector<double>& w, double dt) {
+  double umax = 0.0, wmax = 0.0;
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) umax = std::max(umax, std::abs(u[g.at(i, k)]));
+  for (int k = 0; k <= g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i) wmax = std::max(wmax, std::abs(w[g.at(i, k)]));
+  return std::max(umax * dt / g.dx, wmax * dt / g.dz);
+}
+
+namespace {
+// One split step (both sweeps) of length dt; the fluxes of each direction go to flux_x and
+// flux_z when given.
+void split_step(const Grid& g, const std::vector<double>& u, const std::vector<double>& w,
+                double dt, bool x_first, std::vector<double>& f, VofStats& stats,
+                VofWorkspace& work, std::vector<double>* flux_x, std::vector<double>* flux_z) {
   std::vector<char>& c = work.c;
   c.resize(f.size());
   for (std::size_t n = 0; n < f.size(); ++n) c[n] = f[n] > 0.5 ? 1 : 0;  // Weymouth-Yue c_i
@@ -138,7 +150,41 @@ void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
   const int first = x_first ? 0 : 1;
   for (const int dir : {first, 1 - first}) {
     sweep(g, u, w, dt, dir, c, f, flux, work.clipped_rows, stats);
-    if (fluxes) (dir == 0 ? fluxes->x : fluxes->z).swap(flux);  // (flux is rewritten in full)
+    std::vector<double>* out = dir == 0 ? flux_x : flux_z;
+    if (out) out->swap(flux);  // (flux is rewritten in full)
+  }
+}
+}  // namespace
+
+void advect_volume_fraction(const Grid& g, const std::vector<double>& u,
+                            const std::vector<double>& w, double dt, bool x_first,
+                            std::vector<double>& f, VofStats& stats, VofWorkspace& work,
+                            GrainFluxes* fluxes) {
+  // The step's dt bounds the Courant number of u^n (time_step.cpp), not of the velocity the
+  // interface moves with (the mid-step extrapolation, solver.cpp), which a violent event (a
+  // splash, a front breaking) can take past 1/2, where the sweeps no longer keep f in [0, 1]
+  // and clipping loses grains. Such a step is advanced in equal sub-steps of Courant number at
+  // most kSubstepCourant, with the same velocity; each conserves the volume, and the fluxes
+  // add up over them. Every other step is one split step, as before.
+  const double courant = largest_face_courant(g, u, w, dt);
+  const int substeps = courant <= 0.5 ? 1 : int(std::ceil(courant / kSubstepCourant));
+  if (substeps == 1) {
+    split_step(g, u, w, dt, x_first, f, stats, work, fluxes ? &fluxes->x : nullptr,
+               fluxes ? &fluxes->z : nullptr);
+    return;
+  }
+  ++stats.substepped_steps;
+  if (fluxes) {
+    fluxes->x.assign(g.cells(), 0.0);
+    fluxes->z.assign(g.w_faces(), 0.0);
+  }
+  const double h = dt / substeps;
+  for (int m = 0; m < substeps; ++m) {
+    split_step(g, u, w, h, (m % 2 == 0) == x_first, f, stats, work, fluxes ? &work.flux_x : nullptr,
+               fluxes ? &work.flux_z : nullptr);
+    if (!fluxes) continue;
+    for (std::size_t n = 0; n < fluxes->x.size(); ++n) fluxes->x[n] += work.flux_x[n];
+    for (std::size_t n = 0; n < fluxes->z.size(); ++n) fluxes->z[n] += work.flux_z[n];
   }
 }
 

@@ -53,6 +53,7 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
       {"cell_updates_per_second", double(st.steps) * solver.grid().cells() / std::max(wall, 1e-9)},
       {"mass_error", st.mass_error()},
       {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
+      {"vof_substepped_steps", st.vof_substepped_steps},
       {"max_divergence", st.max_divergence},
       {"dt_min", st.dt_min},
       {"dt_max", st.dt_max},

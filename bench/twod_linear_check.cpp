@@ -19,7 +19,6 @@
 //     frame=0 (grid speed / base surface speed) vtol=1e-4 ptol=1e-10 (viscous: relative to the
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
 //     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
-//     mid_limit=0.05 (its extrapolation's largest displacement per step, cells)
 //     row_shear=1 interface_p=cell|extrapolated (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
@@ -155,7 +154,6 @@ int main(int argc, char** argv) {
   params.stress_bdf2 = a.num("bdf2", params.stress_bdf2 ? 1 : 0) != 0;
   params.interface_midstep_velocity =
       a.num("mid_vof", params.interface_midstep_velocity ? 1 : 0) != 0;
-  params.midstep_extrapolation_limit = a.num("mid_limit", params.midstep_extrapolation_limit);
   params.advection_ab2 = a.num("ab2", params.advection_ab2 ? 1 : 0) != 0;
   params.consistent_momentum = a.num("consistent", params.consistent_momentum ? 1 : 0) != 0;
   params.predictor_pressure_acceleration =

@@ -63,7 +63,6 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("stress_bdf2", p.stress_bdf2 ? 1.0 : 0.0);
   a("advection_transverse_terms", p.advection_transverse_terms ? 1.0 : 0.0);
   a("interface_midstep_velocity", p.interface_midstep_velocity ? 1.0 : 0.0);
-  a("midstep_extrapolation_limit", p.midstep_extrapolation_limit);
   a("surface_row_shear_spacing", r.surface_row_shear_spacing ? 1.0 : 0.0);
   out.attribute(
       group, "interface_pressure",

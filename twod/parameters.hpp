@@ -140,12 +140,6 @@ struct SolverParams {
   // lag is left uncancelled, and the growth falls as the step shrinks; docs/twod-validation.md
   // §2); false: u^n, a first-order lag of the surface's kinematic condition.
   bool interface_midstep_velocity = true;
-  // The most that the mid-step velocity's extrapolated part (r/2)(u^n - u^{n-1}) may move a face's
-  // fluid over the step, in cells (midstep_velocity.hpp). It does not act where u is resolved in
-  // time; unclipped, the extrapolation of the jumps of a light-fluid pocket squeezed out under an
-  // overturning front fed a per-step run-away (the 12 cm sine rollwave at 48 cells per h0 diverged
-  // at 3.4-3.6 s; docs/twod-validation.md §11, item 9). Infinity: no limit.
-  double midstep_extrapolation_limit = 0.05;
   bool advect_momentum = true;
   // Time integration of the velocity form (consistent_momentum = false): true = second-order
   // Adams-Bashforth, (1 + r/2) A^n - (r/2) A^{n-1} with r = dt_n/dt_{n-1} the ratio of the steps

@@ -57,7 +57,6 @@
 
 #include "twod/diagnostics.hpp"
 #include "twod/frame.hpp"
-#include "twod/midstep_velocity.hpp"
 #include "twod/momentum_advection.hpp"
 #include "twod/parallel.hpp"
 #include "twod/surface_row_pressure.hpp"
@@ -136,7 +135,7 @@ double Solver::step(double dt_limit) {
   if (params_.hydrostatic_viscosity_pressure) h_before_ = surface_heights(g_, s_.f);
   const bool consistent =
       params_.consistent_momentum && params_.advect_momentum && params_.advect_interface;
-  const Fields& carrier = interface_velocity(r, dt);
+  const Fields& carrier = interface_velocity(r);
   if (params_.advect_interface)
     advect_volume_fraction(g_, carrier.u, carrier.w, dt, stats_.steps % 2 == 0, s_.f, vof_,
                            vof_work_, consistent ? &grain_fluxes_ : nullptr);
@@ -234,12 +233,21 @@ double Solver::step(double dt_limit) {
   return dt;
 }
 
-const Fields& Solver::interface_velocity(double r, double dt) {
+const Fields& Solver::interface_velocity(double r) {
   if (!params_.interface_midstep_velocity) return s_;
   const bool have_previous = r > 0.0 && previous_.u.size() == s_.u.size();
-  if (have_previous)
-    stats_.midstep_clipped_faces +=
-        midstep_velocity(g_, s_, previous_, r, dt, params_.midstep_extrapolation_limit, midstep_);
+  if (have_previous) {
+    midstep_.u.resize(s_.u.size());
+    midstep_.w.resize(s_.w.size());
+    const long nu = long(s_.u.size()), nw = long(s_.w.size());
+    const double c = 0.5 * r;
+    parallel_for_ranges(nu, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) midstep_.u[n] = s_.u[n] + c * (s_.u[n] - previous_.u[n]);
+    });
+    parallel_for_ranges(nw, [&](int begin, int end) {
+      for (int n = begin; n < end; ++n) midstep_.w[n] = s_.w[n] + c * (s_.w[n] - previous_.w[n]);
+    });
+  }
   previous_.u = s_.u;
   previous_.w = s_.w;
   return have_previous ? midstep_ : s_;

@@ -50,12 +50,10 @@ struct RunStatistics {
   long steps = 0;
   long viscous_iterations = 0, projection_iterations = 0;
   long factorisations = 0;
-  double initial_volume = 0.0;     // granular volume at the start [m^2 per unit width]
-  double volume = 0.0;             // now
-  double clipped_volume = 0.0;     // volume touched by clipping f to [0, 1]
-  long vof_substepped_steps = 0;   // steps whose interface moved in sub-steps (vof_advection.hpp)
-  long midstep_clipped_faces = 0;  // faces whose mid-step extrapolation was clipped, summed over
-                                   // the steps (midstep_velocity.hpp)
+  double initial_volume = 0.0;    // granular volume at the start [m^2 per unit width]
+  double volume = 0.0;            // now
+  double clipped_volume = 0.0;    // volume touched by clipping f to [0, 1]
+  long vof_substepped_steps = 0;  // steps whose interface moved in sub-steps (vof_advection.hpp)
   double dt_min = 0.0, dt_max = 0.0, dt_last = 0.0;
   double max_divergence = 0.0;  // max |div u| after the last projection [1/s]
   double mass_error() const {
@@ -88,9 +86,8 @@ class Solver {
  private:
   void check_health() const;
   // The velocity that moves the interface this step (interface_midstep_velocity): u^n, or its
-  // mid-step extrapolation from u^n and u^{n-1}, limited where u jumps in one step
-  // (midstep_velocity.hpp); keeps u^n for the next step.
-  const Fields& interface_velocity(double r, double dt);
+  // mid-step extrapolation from u^n and u^{n-1}; keeps u^n for the next step.
+  const Fields& interface_velocity(double r);
   // stress_bdf2: delta^n for the advection to carry with the material over this step (the
   // departure points of the BDF2 step along the flow; none before the first step). Its
   // transport term lands in transport_u_, transport_w_.

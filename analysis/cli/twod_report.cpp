@@ -54,7 +54,6 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
       {"mass_error", st.mass_error()},
       {"vof_clipped_volume", st.clipped_volume / std::max(st.initial_volume, 1e-300)},
       {"vof_substepped_steps", st.vof_substepped_steps},
-      {"midstep_clipped_faces", st.midstep_clipped_faces},
       {"max_divergence", st.max_divergence},
       {"dt_min", st.dt_min},
       {"dt_max", st.dt_max},

@@ -133,6 +133,7 @@ void H5Writer::close() {
   if (closed_) return;
   attribute("/", "granbench_version", granbench_version());
   attribute("/", "git_commit", granbench_git_commit());
+  attribute("/", "code_target", granbench_code_target());
   attribute("/", "command_line", process_command_line());
   attribute("/", "created", utc_timestamp_now());
   for (const std::string& set : dataset_paths(file_)) {

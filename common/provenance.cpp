@@ -31,6 +31,10 @@ std::string granbench_git_commit() {
   return GRANBENCH_GIT_COMMIT;
 }
 
+std::string granbench_code_target() {
+  return GRANBENCH_CODE_TARGET;  // defined for this file by common/CMakeLists.txt
+}
+
 std::string process_command_line() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
   const std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

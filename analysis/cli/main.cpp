@@ -72,7 +72,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(kFooter);
   app.set_version_flag("--version", "granbench " + granbench::granbench_version() + " (commit " +
-                                        granbench::granbench_git_commit() + ")");
+                                        granbench::granbench_git_commit() + ", " +
+                                        granbench::granbench_code_target() + " code)");
   add_wellposed_command(app);
   add_steady_command(app);
   add_dispersion_command(app);

@@ -58,6 +58,7 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
   const auto text = [&](const char* key) { return h5_read_string_attribute(out, "/", key); };
   EXPECT_EQ(text("granbench_version"), granbench_version());
   EXPECT_FALSE(text("git_commit").empty());
+  EXPECT_EQ(text("code_target"), granbench_code_target());
   const std::string line = text("command_line");
   EXPECT_NE(line.find("granbench"), std::string::npos) << line;
   EXPECT_NE(line.find(std::string(c.args).substr(0, std::string(c.args).find(' '))),
@@ -92,8 +93,8 @@ INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
 TEST(Version, PrintsTheVersionAndTheCommit) {
   const auto r = run_granbench("--version", "version_" + std::to_string(getpid()));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out,
-            "granbench " + granbench_version() + " (commit " + granbench_git_commit() + ")\n");
+  EXPECT_EQ(r.out, "granbench " + granbench_version() + " (commit " + granbench_git_commit() +
+                       ", " + granbench_code_target() + " code)\n");
 }
 
 }  // namespace

@@ -158,6 +158,13 @@ void parallel_copy(const Eigen::VectorXd& from, Eigen::VectorXd& to) {
   });
 }
 
+void parallel_copy(const std::vector<double>& from, std::vector<double>& to) {
+  to.resize(from.size());
+  parallel_for_ranges(int(from.size()), [&](int begin, int end) {
+    std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+  });
+}
+
 void parallel_zero(Eigen::Index n, Eigen::VectorXd& x) {
   x.resize(n);
   for_segments(n, [&](Eigen::Index lo, Eigen::Index len) { x.segment(lo, len).setZero(); });

@@ -84,5 +84,7 @@ void cg_direction(const Eigen::VectorXd& z, double beta, Eigen::VectorXd& d);
 void parallel_copy(const Eigen::VectorXd& from, Eigen::VectorXd& to);
 void parallel_zero(Eigen::Index n, Eigen::VectorXd& x);
 void parallel_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out);
+// to = from for the solver's std::vector fields.
+void parallel_copy(const std::vector<double>& from, std::vector<double>& to);
 
 }  // namespace granbench::twod

@@ -154,8 +154,15 @@ double Solver::step(double dt_limit) {
   //    the surface row's hydrostatic pressure force
   //    (surface_row_pressure.cpp)
   // (the densities p^n was balanced against, for the predictor: viscous_step.cpp)
-  props_.rho_u_before = props_.rho_u;
-  props_.rho_w_before = props_.rho_w;
+  // update_densities overwrites every face density, so the old arrays can simply change hands
+  if (props_.rho_u_before.size() == props_.rho_u.size() &&
+      props_.rho_w_before.size() == props_.rho_w.size()) {
+    props_.rho_u_before.swap(props_.rho_u);
+    props_.rho_w_before.swap(props_.rho_w);
+  } else {
+    props_.rho_u_before = props_.rho_u;
+    props_.rho_w_before = props_.rho_w;
+  }
   update_densities(g_, s_.f, params_.rheology, props_);
   if (params_.hydrostatic_viscosity_pressure) {
     if (params_.extrapolate_dynamic_viscosity_pressure)
@@ -248,8 +255,8 @@ const Fields& Solver::interface_velocity(double r) {
       for (int n = begin; n < end; ++n) midstep_.w[n] = s_.w[n] + c * (s_.w[n] - previous_.w[n]);
     });
   }
-  previous_.u = s_.u;
-  previous_.w = s_.w;
+  parallel_copy(s_.u, previous_.u);
+  parallel_copy(s_.w, previous_.w);
   return have_previous ? midstep_ : s_;
 }
 

@@ -19,7 +19,8 @@
 //     frame=0 (grid speed / base surface speed) vtol=1e-4 ptol=1e-10 (viscous: relative to the
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
 //     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
-//     row_shear=1 interface_p=cell|extrapolated (defaults: the solver's, twod/parameters.hpp)
+//     row_shear=1 row_tau=0 (surface_row_shear) interface_p=cell|extrapolated (defaults: the
+//     solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
 //     layer=<m> fn= fs= fq=   theory with eta_n, eta_s, q scaled in a surface layer
@@ -166,6 +167,7 @@ int main(int argc, char** argv) {
   params.extrapolate_dynamic_viscosity_pressure =
       a.num("extrap_p", params.extrapolate_dynamic_viscosity_pressure ? 1 : 0) != 0;
   params.surface_row_pressure = a.num("row_p", params.surface_row_pressure ? 1 : 0) != 0;
+  params.surface_row_shear = a.num("row_tau", params.surface_row_shear ? 1 : 0) != 0;
 
   const Material& mat = rh.material;
   const double rho = mat.bulk_density(), g = mat.g;

@@ -59,6 +59,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("viscosity_tangent", p.viscosity_tangent ? 1.0 : 0.0);
   a("hydrostatic_viscosity_pressure", p.hydrostatic_viscosity_pressure ? 1.0 : 0.0);
   a("surface_row_pressure", p.surface_row_pressure ? 1.0 : 0.0);
+  a("surface_row_shear", p.surface_row_shear ? 1.0 : 0.0);
   a("predictor_pressure_acceleration", p.predictor_pressure_acceleration ? 1.0 : 0.0);
   a("stress_bdf2", p.stress_bdf2 ? 1.0 : 0.0);
   a("advection_transverse_terms", p.advection_transverse_terms ? 1.0 : 0.0);

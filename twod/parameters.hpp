@@ -114,6 +114,14 @@ struct SolverParams {
   // its cell from 11 % to 3 % at 32 cells per h0 (docs/twod-validation.md §4). false: the
   // standard MAC force.
   bool surface_row_pressure = true;
+  // true: the w-faces just below and above a partly filled surface row feel the x-derivative of
+  // the shear stress over the heights its grains fill, not over the stencil's dz
+  // (surface_row_shear.cpp). It removes a pressure offset below the surface row that changed
+  // sign with the surface's place in its cell, and with it the growth rate's fall across the cell
+  // (3.3 % at 32 cells per h0); a step between f < 0.3 and f > 0.45 remains (1.9 % in all) and
+  // the 2 cm wave's mid-cell growth falls by 2.4 % (docs/twod-validation.md §4). Off by default
+  // until that step is understood.
+  bool surface_row_shear = false;
   // Passes of predictor + projection per step. 1: one solve. n > 1: each further pass recomputes
   // eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta is taken at the new time level
   // to the accuracy of the iteration (about n times the cost).

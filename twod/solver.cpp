@@ -60,6 +60,7 @@
 #include "twod/momentum_advection.hpp"
 #include "twod/parallel.hpp"
 #include "twod/surface_row_pressure.hpp"
+#include "twod/surface_row_shear.hpp"
 #include "twod/time_step.hpp"
 #include "twod/viscosity_pressure.hpp"
 
@@ -177,6 +178,10 @@ double Solver::step(double dt_limit) {
     surface_row_pressure_correction(g_, params_, s_.f, force_u_);
   else
     force_u_.clear();
+  if (params_.surface_row_shear)
+    surface_row_shear_correction(g_, s_.f, props_, force_w_);
+  else
+    force_w_.clear();
   // 3. momentum predictor
   if (consistent) {
     // the one-step consistent operator, time-centred by its face values: no Adams-Bashforth
@@ -213,7 +218,7 @@ double Solver::step(double dt_limit) {
   // memory carried by the advection above with the material over the step.
   const double dt_f = bdf2_rescale_advection(dt, r);
   stats_.viscous_iterations +=
-      viscous_.predict(s_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_);
+      viscous_.predict(s_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_, force_w_);
   // 4. projection
   if (params_.viscosity_passes > 1) old_ = s_;  // u^n, p^n for the further passes
   stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt_f, s_);
@@ -221,8 +226,8 @@ double Solver::step(double dt_limit) {
   for (int pass = 1; pass < params_.viscosity_passes; ++pass) {
     update_viscosity(g_, s_, model_, props_);
     Fields next = old_;
-    stats_.viscous_iterations +=
-        viscous_.predict(old_, props_, adv_u_, adv_w_, dt_f, u_star_, w_star_, force_u_, &s_);
+    stats_.viscous_iterations += viscous_.predict(old_, props_, adv_u_, adv_w_, dt_f, u_star_,
+                                                  w_star_, force_u_, force_w_, &s_);
     stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt_f, next);
     s_.u.swap(next.u);
     s_.w.swap(next.w);

@@ -119,6 +119,7 @@ class Solver {
   std::vector<double> p_eta_;  // the pressure eta is evaluated at (viscosity_pressure.hpp)
   DynamicPressureHistory dynamic_pressure_;  // extrapolate_dynamic_viscosity_pressure
   std::vector<double> force_u_;              // surface-row pressure correction per u-face
+  std::vector<double> force_w_;              // surface-row shear correction per w-face
   double dt_previous_ = 0.0;                 // the last step taken (shortened or not)
   // stress_bdf2: the advected velocity u~ of this step, and delta^n = u^n - u~^{n-1}, the last
   // step's non-advective increment (empty before the first step)

@@ -82,7 +82,7 @@ void ViscousStep::as_unknowns(const Fields& f, Eigen::VectorXd& v) const {
 int ViscousStep::predict(const Fields& s, const Properties& props, const std::vector<double>& adv_u,
                          const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
                          std::vector<double>& w_star, const std::vector<double>& force_u,
-                         const Fields* about) {
+                         const std::vector<double>& force_w, const Fields* about) {
   const Grid& g = g_;
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
@@ -161,6 +161,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       b_[r] = props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
               share_w(c) * g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
+      if (!force_w.empty()) b_[r] += force_w[c];
     }
   });
   // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n (or the iterate `about`).

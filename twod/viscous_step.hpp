@@ -22,13 +22,13 @@ class ViscousStep {
   ViscousStep(const Grid& g, const SolverParams& params);
   // Predict (u*, w*) from the state s (u^n, w^n, p^n), the explicit advection adv_u, adv_w and
   // the properties at the new time level. Returns the solver iterations.
-  // force_u (may be empty): an explicit force per u-face [N per unit width], added to the
-  // right-hand side. about: the velocity the stress is linearised about (viscosity_tangent);
-  // s when null, the provisional new level in further Picard passes.
+  // force_u, force_w (may be empty): explicit forces per u-face and per w-face [N per unit
+  // width], added to the right-hand side. about: the velocity the stress is linearised about
+  // (viscosity_tangent); s when null, the provisional new level in further Picard passes.
   int predict(const Fields& s, const Properties& props, const std::vector<double>& adv_u,
               const std::vector<double>& adv_w, double dt, std::vector<double>& u_star,
               std::vector<double>& w_star, const std::vector<double>& force_u = {},
-              const Fields* about = nullptr);
+              const std::vector<double>& force_w = {}, const Fields* about = nullptr);
   const SolveStats& stats() const { return solver_.stats(); }
   // The last predictor increment u* - u^n and its step: the next initial guess is
   // u^n + (dt / dt_previous) increment. Kept in checkpoints so that a restart is exact.

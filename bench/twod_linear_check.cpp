@@ -19,8 +19,8 @@
 //     frame=0 (grid speed / base surface speed) vtol=1e-4 ptol=1e-10 (viscous: relative to the
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
 //     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
-//     row_shear=1 row_tau=0 (surface_row_shear) interface_p=cell|extrapolated (defaults: the
-//     solver's, twod/parameters.hpp)
+//     row_shear=1 row_tau=1 (surface_row_shear) interface_p=cell|extrapolated
+//     ambient=1 (ambient_pressure_gradient) (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
 //     layer=<m> fn= fs= fq=   theory with eta_n, eta_s, q scaled in a surface layer
@@ -147,6 +147,7 @@ int main(int argc, char** argv) {
                                 : twod::InterfacePressure::CellAverage;
   params.cfl = a.num("cfl", params.cfl);
   rh.surface_row_shear_spacing = a.num("row_shear", rh.surface_row_shear_spacing ? 1 : 0) != 0;
+  rh.ambient_pressure_gradient = a.num("ambient", rh.ambient_pressure_gradient ? 1 : 0) != 0;
   params.dt_max = a.num("dt_max", params.dt_max);
   params.viscous_tolerance = a.num("vtol", params.viscous_tolerance);
   params.solver_tolerance = a.num("ptol", params.solver_tolerance);

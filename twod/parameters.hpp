@@ -66,6 +66,15 @@ struct Rheology {
   // tied to 0 at the lid, the solver felt the heavier fluid 19 times more than the theory).
   double rho_light = 0.015;  // light-fluid density [kg m^-3]
   double eta_light = 1e-5;   // light-fluid viscosity [Pa s]
+  // true (default since 4 December, twenty-first session): every face feels the ambient
+  // pressure gradient along the slope, -rho_light g sin(zeta), the light fluid's hydrostatic
+  // gradient along x that a periodic domain cannot carry as a pressure difference
+  // (viscous_step.cpp). The light fluid at rest above a steady layer is then in balance and moves
+  // with the surface; the grains feel their weight less the light fluid's (buoyancy, 1e-5 of it).
+  // false: gravity alone drives the light layer along the slope, a stream 0.06 m/s faster than
+  // the surface at the lid whose shear (28 1/s) made the growth depend on the seed's amplitude
+  // with the surface on a cell face (docs/twod-validation.md §4, "Wisps at a face").
+  bool ambient_pressure_gradient = true;
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
   InterfacePressure interface_pressure = InterfacePressure::Extrapolated;
   // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =
@@ -75,7 +84,9 @@ struct Rheology {
   // filled surface row takes its shear rate over the distance to the centroid of the row's
   // grains, (1 + f) dz / 2 (properties.cpp). It cuts the growth rate's dependence on where the
   // surface sits in its cell from 4.9 % to 2.2 % at 32 cells per h0 (12.8 % to 3.1 % at 16,
-  // 1.3 % to 0.7 % at 64) at the same mean over the cell (docs/twod-validation.md §4).
+  // 1.3 % to 0.7 % at 64) at the same mean over the cell (docs/twod-validation.md §4). Since the
+  // twenty-first session the surface row's own strain rate takes that shear of its two lower
+  // corners, not the mean of four corners with the light fluid's two (properties.cpp).
   bool surface_row_shear_spacing = true;
 };
 
@@ -114,14 +125,14 @@ struct SolverParams {
   // its cell from 11 % to 3 % at 32 cells per h0 (docs/twod-validation.md §4). false: the
   // standard MAC force.
   bool surface_row_pressure = true;
-  // true: the w-faces just below and above a partly filled surface row feel the x-derivative of
-  // the shear stress over the heights its grains fill, not over the stencil's dz
-  // (surface_row_shear.cpp). It removes a pressure offset below the surface row that changed
-  // sign with the surface's place in its cell, and with it the growth rate's fall across the cell
-  // (3.3 % at 32 cells per h0); a step between f < 0.3 and f > 0.45 remains (1.9 % in all) and
-  // the 2 cm wave's mid-cell growth falls by 2.4 % (docs/twod-validation.md §4). Off by default
-  // until that step is understood.
-  bool surface_row_shear = false;
+  // true (default since 4 December, twenty-first session): the w-faces just below and above a
+  // partly filled surface row feel the x-derivative of the shear stress over the heights its
+  // grains fill, not over the stencil's dz (surface_row_shear.cpp). It removes a pressure offset
+  // below the surface row that changed sign with the surface's place in its cell, and with it the
+  // growth rate's fall across the cell; with the ambient pressure gradient (Rheology) the §7
+  // growth varies by 0.8 % between the surface on a face and at 1/4, 1/2, 3/4 of its cell at 32
+  // cells per h0, against 3.6 % without either (docs/twod-validation.md §4). false: the stencil's.
+  bool surface_row_shear = true;
   // Passes of predictor + projection per step. 1: one solve. n > 1: each further pass recomputes
   // eta from the previous pass's u^{n+1}, p^{n+1} (Picard), so eta is taken at the new time level
   // to the accuracy of the iteration (about n times the cost).

@@ -11,7 +11,8 @@
 //
 // Locations on the MAC grid: D_xx, D_zz are exact at cell centres and D_xz = gamma/2 with
 // gamma = du/dz + dw/dx exact at corners. eta at a cell centre uses the corner gammas averaged
-// to the centre; eta at a corner uses the cell D_xx, D_zz averaged to the corner and p, f
+// to the centre (in the surface row of a graph surface, its two lower corners over the shear
+// spacing: see there); eta at a corner uses the cell D_xx, D_zz averaged to the corner and p, f
 // averaged from the surrounding cells (p extrapolated linearly to the bed, p = 0 on the top).
 // Boundaries: no slip at the bed (ghost u = 2 u_bed - u, so gamma = 2 (u - u_bed)/dz; u_bed = 0
 // unless the grid moves, grid.hpp), du/dz = 0 at the top
@@ -47,6 +48,7 @@
 #include <cmath>
 #include <limits>
 
+#include "twod/fill_fraction.hpp"
 #include "twod/parallel.hpp"
 
 namespace granbench::twod {
@@ -208,6 +210,19 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     if (zb >= h) return ps;
     return ps + (p_at(kb) - ps) * (h - z) / (h - zb);
   };
+  // A partly filled cell with a full cell below and an empty one above: the surface row of a
+  // surface that is a graph. Its strain rate is its grains': the shear of its two lower corners,
+  // over the shear spacing (1 + f) dz / 2 as the corners' own stress takes it (below), not the
+  // mean of all four corners, whose upper two lie in the light fluid. Averaged in, the light
+  // fluid's shear set the surface row's viscosity: while gravity drove the light layer as a
+  // stream (28 1/s at the surface, Rheology::ambient_pressure_gradient) it raised the 2 cm
+  // growth by 0.1 1/s, and without the stream the mean of four corners halves the grains' shear
+  // (docs/twod-validation.md §4, "Wisps at a face").
+  const bool spacing = extrapolate && model.rheology().surface_row_shear_spacing;
+  auto surface_row_of_graph = [&](int i, int k) {
+    return k > 0 && k < nz - 1 && is_cut(f[g.at(i, k)]) && is_full(f[g.at(i, k - 1)]) &&
+           is_empty(f[g.at(i, k + 1)]);
+  };
   std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
   Dxx.resize(g.cells());
   Dzz.resize(g.cells());
@@ -218,8 +233,10 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       const std::size_t c = g.at(i, k);
       Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
       Dzz[c] = (w[g.at(i, k + 1)] - w[c]) * idz;
-      const double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
-                                  gam[g.at(i + 1, k + 1)]);
+      double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
+                            gam[g.at(i + 1, k + 1)]);
+      if (spacing && surface_row_of_graph(i, k))  // the grains' shear: the corners below only
+        Dxz = 0.25 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)]) * 2.0 / (1.0 + f[c]);
       const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);
       const double D = std::sqrt(normal2 + Dxz * Dxz);
       double pc = p[c];

@@ -3,6 +3,16 @@
 //   rho^{n+1} (u* - u^n)/dt = div(2 eta D(u*)) - grad p^n + rho^{n+1} (g - (u^n . grad) u^n),
 //   g = (g sin zeta, -g cos zeta),
 //
+// less, along x, the ambient pressure gradient rho_l g sin zeta (Rheology::
+// ambient_pressure_gradient): the light fluid's hydrostatic gradient along the slope, which the
+// periodic domain cannot hold as a pressure difference between its ends. Without it the light
+// layer is a stream driven down the slope by its own weight against its small viscosity,
+//   u_l(z) - u_s = (rho_l g sin zeta / eta_l) (H (z - h) - (z - h)^2 / 2),  H = Lz - h,
+// 0.06 m/s faster than the surface at the lid, and its shear rate, 28 1/s at the surface,
+// times the one-row step that the light fluid's lowest row makes where the surface crosses a
+// cell face, drove a first-mode light flow of 2e-3 m/s at any wave amplitude, which the films
+// of grains at the crests followed (docs/twod-validation.md §4, "Wisps at a face").
+//
 // where a face has lost mass in the interface's move, grad p^n enters as the acceleration it gave,
 // (rho^{n+1}/rho^n) grad p^n, and the rest after the solve (predict(); SolverParams::
 // predictor_pressure_acceleration),
@@ -58,6 +68,7 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
     : g_(g),
       gx_(params.rheology.material.g * std::sin(params.zeta)),
       gz_(-params.rheology.material.g * std::cos(params.zeta)),
+      rho_ambient_(params.rheology.ambient_pressure_gradient ? params.rheology.rho_light : 0.0),
       kind_(params.viscous_solver),
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
@@ -147,7 +158,8 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.u_index(i, k);
-      b_[r] = props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c] + gx_) -
+      b_[r] = props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c]) +
+              (props.rho_u[c] - rho_ambient_) * V * gx_ -
               share_u(c) * g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];

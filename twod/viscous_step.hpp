@@ -44,7 +44,8 @@ class ViscousStep {
   void as_unknowns(const Fields& f, Eigen::VectorXd& v) const;
 
   Grid g_;
-  double gx_, gz_;  // gravity components g sin(zeta), -g cos(zeta)
+  double gx_, gz_;      // gravity components g sin(zeta), -g cos(zeta)
+  double rho_ambient_;  // density whose weight along x the ambient pressure gradient carries
   LinearSolverKind kind_;
   double tol_;
   bool tangent_;                // SolverParams::viscosity_tangent

@@ -22,14 +22,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "twod/fill_fraction.hpp"
 #include "twod/parallel.hpp"
 #include "twod/plic.hpp"
 
 namespace granbench::twod {
 
 namespace {
-constexpr double kEmpty = 1e-12;  // cells with f below this (or above 1 - this) are not cut
-
 double f_at(const Grid& g, const std::vector<double>& f, int i, int k) {
   k = std::clamp(k, 0, g.nz - 1);
   return f[g.at(i, k)];
@@ -40,7 +39,7 @@ double f_at(const Grid& g, const std::vector<double>& f, int i, int k) {
 double donor_flux(const Grid& g, const std::vector<double>& f, int i, int k, int dir, bool upper,
                   double s) {
   const double fc = f[g.at(i, k)];
-  if (fc <= kEmpty || fc >= 1.0 - kEmpty) return s * fc;
+  if (!is_cut(fc)) return s * fc;
   double m1, m2;
   youngs_normal(g, f, i, k, m1, m2);
   if (m1 == 0.0 && m2 == 0.0) return s * fc;

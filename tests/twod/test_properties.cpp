@@ -77,3 +77,37 @@ TEST(Properties, SurfaceRowShearSpacingScalesTheCornerBelowAPartlyFilledRow) {
     }
   }
 }
+
+TEST(Properties, TheSurfaceRowsStrainRateIsItsGrainsShear) {
+  // The surface row's |D| takes the shear of its two lower (granular) corners over the shear
+  // spacing (1 + f) dz / 2, not the mean of four corners whose upper two lie in the light fluid:
+  // here the light fluid above is sheared ten times as fast as the grains, and I in the surface
+  // row must not see it. Rows below take the four-corner mean as before.
+  const Grid g(4, 8, 0.004, 0.008);  // dz = 1 mm
+  const double grains_shear = 2.0, light_shear = 20.0;
+  for (double fill : {0.25, 0.5, 0.75}) {
+    Fields s(g);
+    for (int k = 0; k < g.nz; ++k)
+      for (int i = 0; i < g.nx; ++i) {
+        s.f[g.at(i, k)] = k < 3 ? 1.0 : (k == 3 ? fill : 0.0);
+        s.u[g.at(i, k)] = k <= 3 ? grains_shear * g.zc(k)
+                                 : grains_shear * g.zc(3) + light_shear * (g.zc(k) - g.zc(3));
+        s.p[g.at(i, k)] = std::max(3.0 + fill - (k + 0.5), 0.0) * 30.0 + 20.0;  // I finite
+      }
+    Rheology r;
+    r.surface_row_shear_spacing = true;
+    const ViscosityModel model(r);
+    Properties props(g);
+    update_viscosity(g, s, model, props);
+    // the stencil's gamma at the surface row's lower corners is grains_shear (u over dz)
+    const double D_surface = 0.5 * grains_shear * 2.0 / (1.0 + fill);
+    const double D_below = 0.5 * grains_shear;  // row 2: four granular corners
+    for (int i = 0; i < g.nx; ++i) {
+      EXPECT_NEAR(props.I_c[g.at(i, 3)], model.inertial_number(s.p[g.at(i, 3)], D_surface),
+                  1e-12 * props.I_c[g.at(i, 3)])
+          << fill;
+      EXPECT_NEAR(props.I_c[g.at(i, 2)], model.inertial_number(s.p[g.at(i, 2)], D_below),
+                  1e-12 * props.I_c[g.at(i, 2)]);
+    }
+  }
+}

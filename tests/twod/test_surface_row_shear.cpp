@@ -90,9 +90,37 @@ TEST(SurfaceRowShear, NothingWhereTheStressIsUniformOrTheSurfaceIsNoGraph) {
   EXPECT_NE(F[g.at(3, k)], 0.0);  // the others are corrected
 }
 
+TEST(SurfaceRowShear, TheVofRoundOffAroundTheRowLeavesItOn) {
+  // With the surface on a cell face the VOF leaves wisps of 1e-22 above the films and 1 - 1e-16
+  // below them; the row is still a graph surface's row and keeps its correction.
+  const Grid g(8, 8, 0.008, 0.008);
+  const int k = 4;
+  Properties props(g);
+  for (int j = 0; j <= g.nz; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      props.eta_n[g.at(i, j)] = 0.5;
+      props.gamma_n[g.at(i, j)] = 3.0 + std::cos(2.0 * M_PI * i * g.dx / g.Lx);
+    }
+  for (const double fk : {0.01, 0.5}) {
+    const auto clean = layer(g, k, fk);
+    auto touched = clean;
+    for (int i = 0; i < g.nx; ++i) {
+      touched[g.at(i, k - 1)] = 1.0 - 1e-16;
+      touched[g.at(i, k + 1)] = 1e-22;
+      touched[g.at(i, k + 2)] = 1e-30;
+    }
+    std::vector<double> expected, F;
+    surface_row_shear_correction(g, clean, props, expected);
+    surface_row_shear_correction(g, touched, props, F);
+    ASSERT_NE(expected[g.at(1, k)], 0.0);
+    for (std::size_t n = 0; n < F.size(); ++n) EXPECT_EQ(F[n], expected[n]) << "face " << n;
+  }
+}
+
 TEST(SurfaceRowShear, AFlatLayerFeelsOnlyRoundOff) {
   const double h0 = 0.004, Lx = 0.008;
   SolverParams off;
+  off.surface_row_shear = false;
   off.zeta = degrees_to_radians(28.5);
   const MuCurve curve(CurveKind::Regularised, off.rheology.material, h0);
   const SteadyState steady = steady_state(curve, off.zeta, h0);

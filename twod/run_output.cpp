@@ -5,6 +5,7 @@
 
 #include <filesystem>
 
+#include "common/companion_path.hpp"
 #include "twod/checkpoint.hpp"
 
 namespace granbench::twod {
@@ -12,7 +13,7 @@ namespace granbench::twod {
 namespace {
 
 std::string xdmf_path(const std::string& out) {
-  return std::filesystem::path(out).replace_extension(".xdmf").string();
+  return companion_path(out, ".xdmf");
 }
 
 }  // namespace

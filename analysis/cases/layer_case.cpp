@@ -15,6 +15,7 @@
 #include "analysis/cases/layer_xdmf.hpp"
 #include "analysis/cases/perturbation_energy.hpp"
 #include "analysis/comparison/twod_settings.hpp"
+#include "common/companion_path.hpp"
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
 #include "twod/viscosity_mixing.hpp"
@@ -321,8 +322,7 @@ void write_layer_case(const std::string& path, const LayerCaseSpec& spec,
   out.close();
   // The XDMF index beside it (NAME.xdmf), referencing the HDF5 file by its name.
   const std::filesystem::path h5(path);
-  write_layer_case_xdmf(std::filesystem::path(h5).replace_extension(".xdmf").string(),
-                        h5.filename().string(), r);
+  write_layer_case_xdmf(companion_path(h5, ".xdmf"), h5.filename().string(), r);
 }
 
 }  // namespace granbench::cases

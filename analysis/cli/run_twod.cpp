@@ -21,6 +21,7 @@
 #include "analysis/cli/physics_warnings.hpp"
 #include "analysis/comparison/eigenmode_seed.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
+#include "common/companion_path.hpp"
 #include "twod/checkpoint.hpp"
 #include "twod/initial_state.hpp"
 #include "twod/output.hpp"
@@ -29,10 +30,6 @@
 namespace granbench::cli {
 
 namespace {
-
-std::string replace_extension(const std::string& path, const std::string& ext) {
-  return std::filesystem::path(path).replace_extension(ext).string();
-}
 
 // The checkpoint to continue from, refused (UsageError naming the option) when it is not one or
 // belongs to other physics, another grid or a later time.
@@ -82,7 +79,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   RunFiles files;
   files.out = o.output.out;
   files.checkpoint = !mo.checkpoint.empty()  ? mo.checkpoint
-                     : !o.output.out.empty() ? replace_extension(o.output.out, ".checkpoint.h5")
+                     : !o.output.out.empty() ? companion_path(o.output.out, ".checkpoint.h5")
                                              : std::string("twod.checkpoint.h5");
   if (!files.out.empty()) {
     try {  // a name ParaView's XDMF readers cannot open is bad input, refused before the run
@@ -91,7 +88,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
       throw UsageError(e.what());
     }
     require_writable(files.out, "--out");
-    require_writable(replace_extension(files.out, ".xdmf"), "--out");
+    require_writable(companion_path(files.out, ".xdmf"), "--out");
   }
   require_writable(files.checkpoint, "--checkpoint");
   const auto claim = claim_output(files.out, "--out");  // held for the run

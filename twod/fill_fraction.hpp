@@ -1,6 +1,10 @@
 // When a cell's granular fraction counts as full, empty or cut by the surface.
 #pragma once
 
+#include <vector>
+
+#include "twod/grid.hpp"
+
 namespace granbench::twod {
 
 // The VOF step leaves round-off in cells the surface only touches: wisps of 1e-30 to 1e-16 in the
@@ -19,6 +23,13 @@ inline bool is_full(double f) {
 // A cell the surface cuts: neither empty nor full.
 inline bool is_cut(double f) {
   return !is_empty(f) && !is_full(f);
+}
+
+// Row k of column i holds the surface of a graph h(x): cut, with a full cell below and an empty
+// one above (the surface row that surface_row_shear.cpp and properties.cpp treat as such).
+inline bool is_graph_surface_row(const Grid& g, const std::vector<double>& f, int i, int k) {
+  return k > 0 && k < g.nz - 1 && is_cut(f[g.at(i, k)]) && is_full(f[g.at(i, k - 1)]) &&
+         is_empty(f[g.at(i, k + 1)]);
 }
 
 }  // namespace granbench::twod

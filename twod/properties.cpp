@@ -219,10 +219,6 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // growth by 0.1 1/s, and without the stream the mean of four corners halves the grains' shear
   // (docs/twod-validation.md §4, "Wisps at a face").
   const bool spacing = extrapolate && model.rheology().surface_row_shear_spacing;
-  auto surface_row_of_graph = [&](int i, int k) {
-    return k > 0 && k < nz - 1 && is_cut(f[g.at(i, k)]) && is_full(f[g.at(i, k - 1)]) &&
-           is_empty(f[g.at(i, k + 1)]);
-  };
   std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
   Dxx.resize(g.cells());
   Dzz.resize(g.cells());
@@ -235,7 +231,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       Dzz[c] = (w[g.at(i, k + 1)] - w[c]) * idz;
       double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
                             gam[g.at(i + 1, k + 1)]);
-      if (spacing && surface_row_of_graph(i, k))  // the grains' shear: the corners below only
+      if (spacing && is_graph_surface_row(g, f, i, k))  // the grains' shear: the corners below only
         Dxz = 0.25 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)]) * 2.0 / (1.0 + f[c]);
       const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);
       const double D = std::sqrt(normal2 + Dxz * Dxz);

@@ -45,8 +45,8 @@ void surface_row_shear_correction(const Grid& g, const std::vector<double>& f,
   // each column writes only its own w-faces
   parallel_for(g.nx, true, [&](int i) {
     for (int k = 1; k < nz - 1; ++k) {
+      if (!is_graph_surface_row(g, f, i, k)) continue;
       const double fk = f[g.at(i, k)];
-      if (!is_cut(fk) || !is_full(f[g.at(i, k - 1)]) || !is_empty(f[g.at(i, k + 1)])) continue;
       const double dtau = props.eta_n[g.at(i + 1, k)] * props.gamma_n[g.at(i + 1, k)] -
                           props.eta_n[g.at(i, k)] * props.gamma_n[g.at(i, k)];
       correction[g.at(i, k)] = -0.5 * (1.0 - fk) * g.dz * dtau;

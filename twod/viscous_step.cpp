@@ -45,6 +45,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "twod/explicit_stress_limit.hpp"
 #include "twod/parallel.hpp"
 #include "twod/pcg.hpp"
 
@@ -73,7 +74,6 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
       pressure_acceleration_(params.predictor_pressure_acceleration),
-      rho_grains_(params.rheology.material.bulk_density()),
       op_(g),
       explicit_stress_(g),
       solver_(params.viscous_solver, params.viscous_tolerance) {}
@@ -98,24 +98,12 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   const int nx = g.nx, nz = g.nz;
   const double V = g.cell_volume();
   if (tangent_) {
-    // The implicit part eta_m = max(eta_t, eta - K): the tangent, unless that leaves an explicit
-    // part (eta - eta_t) dt / (rho h^2) above 1, which explicit stress cannot carry. At low I
-    // the tangent ratio Gamma/mu -> 0 while eta reaches eta_max: in a layer coming to rest (§5.2,
-    // eta_max = 1e7 Pa s) the whole yield stress was then explicit, mu p sign(D^n), and the layer
-    // started to move again on a slope below mu_s. In the §7 flow the ratio is below 0.4, so
-    // the limit never acts there.
-    const double h = std::min(g.dx, g.dz);
-    const double K = rho_grains_ * h * h / dt;
-    auto implicit = [K](const std::vector<double>& eta, const std::vector<double>& eta_t,
-                        std::vector<double>& out) {
-      out.resize(eta.size());
-      const long n = long(eta.size());
-      parallel_for_ranges(n, [&](int begin, int end) {
-        for (int c = begin; c < end; ++c) out[c] = std::max(eta_t[c], eta[c] - K);
-      });
-    };
-    implicit(props.eta_c, props.eta_c_tangent, implicit_c_);
-    implicit(props.eta_n, props.eta_n_tangent, implicit_n_);
+    // The implicit part: the tangent, unless that leaves more explicit stress than the lightest
+    // face beside a stress point can carry (explicit_stress_limit.hpp). At low I the tangent
+    // ratio Gamma/mu -> 0 while eta reaches eta_max: in a layer coming to rest (§5.2, eta_max =
+    // 1e7 Pa s) the whole yield stress was then explicit, mu p sign(D^n), and the layer started
+    // to move again on a slope below mu_s.
+    implicit_viscosities(g, props, dt, implicit_c_, implicit_n_);
     op_.set(props, implicit_c_, implicit_n_, dt);
   } else
     op_.set(props, dt);

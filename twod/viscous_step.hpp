@@ -50,7 +50,6 @@ class ViscousStep {
   double tol_;
   bool tangent_;                // SolverParams::viscosity_tangent
   bool pressure_acceleration_;  // SolverParams::predictor_pressure_acceleration
-  double rho_grains_;  // bulk density of the grains: the scale of the explicit-stress limit
   ViscousOperator op_;
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners

@@ -12,8 +12,8 @@
 // (eta - eta_t) dt / (rho h^2) < 0.4). At a point next to a face that holds mostly light fluid
 // (under an overturned front, beside a pocket of light fluid) it is the whole secant: taking the
 // grains' density there, as the limit did before, left an explicit stress up to 10^5 times what
-// the light face's mass can carry, and its velocity doubled at every step
-// (docs/twod-validation.md §11 item 9).
+// the light face's mass can carry; the 12 cm eigenmode rollwave ran away in such a pocket at
+// 8.08 s (docs/twod-validation.md §11 item 9).
 #pragma once
 
 #include <vector>

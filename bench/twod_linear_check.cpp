@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
   params.consistent_momentum = a.num("consistent", params.consistent_momentum ? 1 : 0) != 0;
   params.predictor_pressure_acceleration =
       a.num("accel", params.predictor_pressure_acceleration ? 1 : 0) != 0;
+  params.predictor_acceleration_limit = a.num("accel_limit", params.predictor_acceleration_limit);
   params.advection_transverse_terms =
       a.num("transverse", params.advection_transverse_terms ? 1 : 0) != 0;
   params.viscosity_tangent = a.num("tangent", params.viscosity_tangent ? 1 : 0) != 0;

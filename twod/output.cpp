@@ -62,6 +62,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("surface_row_pressure", p.surface_row_pressure ? 1.0 : 0.0);
   a("surface_row_shear", p.surface_row_shear ? 1.0 : 0.0);
   a("predictor_pressure_acceleration", p.predictor_pressure_acceleration ? 1.0 : 0.0);
+  a("predictor_acceleration_limit", p.predictor_acceleration_limit);
   a("stress_bdf2", p.stress_bdf2 ? 1.0 : 0.0);
   a("advection_transverse_terms", p.advection_transverse_terms ? 1.0 : 0.0);
   a("interface_midstep_velocity", p.interface_midstep_velocity ? 1.0 : 0.0);

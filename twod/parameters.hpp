@@ -153,6 +153,12 @@ struct SolverParams {
   // 6.5 s (docs/twod-validation.md §10, last subsection). Identical where no face's density
   // changes.
   bool predictor_pressure_acceleration = true;
+  // With predictor_pressure_acceleration: the largest acceleration grad p^n / rho^{n+1} the
+  // predictor's stress solve carries on a face, in units of g; the rest goes to u* after the
+  // solve, like an emptied face's (viscous_step.cpp). Gravity and the flow's own accelerations
+  // (U^2/h0 ~ 37 g in the section 7 flow) stay below it; a film of light fluid between grains,
+  // whose face carries the grains' pressure gradient, sits at ~1e5 g. 0: no limit.
+  double predictor_acceleration_limit = 100.0;
   // The velocity that moves the interface (and carries the momentum's mass fluxes): true: the
   // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are (the
   // default since eta's dynamic pressure is extrapolated too: with that alone the interface's

@@ -74,6 +74,7 @@ ViscousStep::ViscousStep(const Grid& g, const SolverParams& params)
       tol_(params.viscous_tolerance),
       tangent_(params.viscosity_tangent),
       pressure_acceleration_(params.predictor_pressure_acceleration),
+      acceleration_limit_(params.predictor_acceleration_limit * params.rheology.material.g),
       op_(g),
       explicit_stress_(g),
       solver_(params.viscous_solver, params.viscous_tolerance) {}
@@ -129,26 +130,44 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   // pressure gradient times rho^{n+1} / rho^n would be the same kick on the grains now there,
   // spread the same way (a coarse saturated rollwave then ran at four times its flux). Where
   // rho is unchanged the factor is 1 exactly and the rest 0, so nothing changes there.
+  //
+  // The same holds for a face that stays light while the grains around it hold it: a film of
+  // light fluid between grains (the floor of a pocket under an overturned front) keeps the
+  // grains' pressure gradient, balanced by the stress of its granular corners, not by its own
+  // mass. The solve spreads that force into the grains too; next to a face that has just been
+  // emptied (whose rest goes to u* unspread) the two no longer add up to a gradient, and the
+  // projection leaves the difference as a vortex: the 12 cm sine rollwave at 48 cells per h0
+  // went from 0.6 to 52 m/s in one step at 4.76 s (docs/twod-validation.md §11 item 9). So the
+  // solve carries at most the acceleration acceleration_limit_ (100 g by default; gravity and
+  // the flow's own accelerations stay below it), and the rest joins the emptied faces' rest.
+  // Whatever the split, u* holds the whole dt grad p^n / rho^{n+1} after the rest is added, and
+  // the projection removes that exactly; the split only decides what the stress sees.
   const bool have_before = pressure_acceleration_ &&
                            props.rho_u_before.size() == props.rho_u.size() &&
                            props.rho_w_before.size() == props.rho_w.size();
-  auto share = [](double rho, double rho_before) {
-    return rho < rho_before ? rho / rho_before : 1.0;
+  const bool limited = pressure_acceleration_ && acceleration_limit_ > 0.0;
+  const double ix = 1.0 / g.dx, iz = 1.0 / g.dz;
+  // the share of grad p^n that goes through the solve on a face of density rho (rho_before at
+  // the step before, when known), whose pressure difference over its spacing is dp_over_h
+  auto share = [&](double rho, double rho_before, double dp_over_h) {
+    double s = have_before && rho < rho_before ? rho / rho_before : 1.0;
+    if (limited && s * std::abs(dp_over_h) > acceleration_limit_ * rho)
+      s = acceleration_limit_ * rho / std::abs(dp_over_h);
+    return s;
   };
-  auto share_u = [&](std::size_t c) {
-    return have_before ? share(props.rho_u[c], props.rho_u_before[c]) : 1.0;
-  };
-  auto share_w = [&](std::size_t c) {
-    return have_before ? share(props.rho_w[c], props.rho_w_before[c]) : 1.0;
-  };
+  auto dp_u = [&](int i, int k) { return (s.p[g.at(i, k)] - s.p[g.at(i - 1, k)]) * ix; };
+  auto dp_w = [&](int i, int k) { return (s.p[g.at(i, k)] - s.p[g.at(i, k - 1)]) * iz; };
+  auto before_u = [&](std::size_t c) { return have_before ? props.rho_u_before[c] : 0.0; };
+  auto before_w = [&](std::size_t c) { return have_before ? props.rho_w_before[c] : 0.0; };
   const double inv_dt = 1.0 / dt;
   parallel_for(nz, true, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.u_index(i, k);
-      b_[r] = props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c]) +
-              (props.rho_u[c] - rho_ambient_) * V * gx_ -
-              share_u(c) * g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
+      b_[r] =
+          props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c]) +
+          (props.rho_u[c] - rho_ambient_) * V * gx_ -
+          share(props.rho_u[c], before_u(c), dp_u(i, k)) * g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
       x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_u.empty()) b_[r] += force_u[c];
     }
@@ -158,8 +177,9 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);
       const int r = op_.w_index(i, k);
-      b_[r] = props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
-              share_w(c) * g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
+      b_[r] =
+          props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
+          share(props.rho_w[c], before_w(c), dp_w(i, k)) * g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
       x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
       if (!force_w.empty()) b_[r] += force_w[c];
     }
@@ -188,7 +208,6 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
       b_[op_.u_index(i, 0)] += 2.0 * props.eta_n[g.at(i, 0)] * V / (g.dz * g.dz) * g.bed_velocity();
   // Known values at the top: w^n on the top face in the top cell's D_zz, and the top corner's
   // tau_xz = eta (dw/dx) (du/dz = 0 there).
-  const double ix = 1.0 / g.dx, iz = 1.0 / g.dz;
   for (int i = 0; i < nx; ++i) {
     const double w_top = s.w[g.at(i, nz)];
     b_[op_.w_index(i, nz - 1)] += 2.0 * props.eta_c[g.at(i, nz - 1)] * V * iz * iz * w_top;
@@ -233,23 +252,23 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
     const int k = k_from_1 + 1;
     for (int i = 0; i < nx; ++i) w_star[g.at(i, k)] = x_[op_.w_index(i, k)];
   });
-  if (have_before) {  // the rest of dt grad p^n / rho^{n+1}, where rho has changed (see above)
+  if (have_before || limited) {  // the rest of dt grad p^n / rho^{n+1}, where the solve took
+                                 // less than the whole (see above)
     auto rest = [&share, dt](double rho, double rho_before, double dp_over_h) {
-      return rho < rho_before ? dt * (1.0 - share(rho, rho_before)) / rho * dp_over_h : 0.0;
+      const double carried = share(rho, rho_before, dp_over_h);
+      return carried < 1.0 ? dt * (1.0 - carried) / rho * dp_over_h : 0.0;
     };
     parallel_for(nz, true, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const std::size_t c = g.at(i, k);
-        u_star[c] -=
-            rest(props.rho_u[c], props.rho_u_before[c], (s.p[c] - s.p[g.at(i - 1, k)]) * ix);
+        u_star[c] -= rest(props.rho_u[c], before_u(c), dp_u(i, k));
       }
     });
     parallel_for(nz - 1, true, [&](int k_from_1) {
       const int k = k_from_1 + 1;
       for (int i = 0; i < nx; ++i) {
         const std::size_t c = g.at(i, k);
-        w_star[c] -=
-            rest(props.rho_w[c], props.rho_w_before[c], (s.p[c] - s.p[g.at(i, k - 1)]) * iz);
+        w_star[c] -= rest(props.rho_w[c], before_w(c), dp_w(i, k));
       }
     });
   }

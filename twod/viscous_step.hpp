@@ -50,6 +50,7 @@ class ViscousStep {
   double tol_;
   bool tangent_;                // SolverParams::viscosity_tangent
   bool pressure_acceleration_;  // SolverParams::predictor_pressure_acceleration
+  double acceleration_limit_;   // SolverParams::predictor_acceleration_limit times g [m/s^2]
   ViscousOperator op_;
   ViscousOperator explicit_stress_;  // S(eta - eta_tangent), applied to u^n (tangent_ only)
   PatternedMatrix A_;                // assembled only for the sparse-matrix preconditioners

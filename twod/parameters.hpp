@@ -155,9 +155,10 @@ struct SolverParams {
   bool predictor_pressure_acceleration = true;
   // With predictor_pressure_acceleration: the largest acceleration grad p^n / rho^{n+1} the
   // predictor's stress solve carries on a face, in units of g; the rest goes to u* after the
-  // solve, like an emptied face's (viscous_step.cpp). Gravity and the flow's own accelerations
-  // (U^2/h0 ~ 37 g in the section 7 flow) stay below it; a film of light fluid between grains,
-  // whose face carries the grains' pressure gradient, sits at ~1e5 g. 0: no limit.
+  // solve, like an emptied face's (viscous_step.cpp). Gravity and the bulk flow's accelerations
+  // (U^2/h0 ~ 37 g in the section 7 flow) stay below it: the linear runs never reach it. A film
+  // of light fluid between grains, whose face carries the grains' pressure gradient, sits at
+  // ~1e5 g; in nonlinear waves some faces at fronts exceed it too. 0: no limit.
   double predictor_acceleration_limit = 100.0;
   // The velocity that moves the interface (and carries the momentum's mass fluxes): true: the
   // mid-step extrapolation u^n + (r/2)(u^n - u^{n-1}), divergence-free as both levels are (the

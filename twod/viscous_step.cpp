@@ -139,7 +139,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   // projection leaves the difference as a vortex: the 12 cm sine rollwave at 48 cells per h0
   // went from 0.6 to 52 m/s in one step at 4.76 s (docs/twod-validation.md §11 item 9). So the
   // solve carries at most the acceleration acceleration_limit_ (100 g by default; gravity and
-  // the flow's own accelerations stay below it), and the rest joins the emptied faces' rest.
+  // the bulk flow's accelerations stay below it), and the rest joins the emptied faces' rest.
   // Whatever the split, u* holds the whole dt grad p^n / rho^{n+1} after the rest is added, and
   // the projection removes that exactly; the split only decides what the stress sees.
   const bool have_before = pressure_acceleration_ &&

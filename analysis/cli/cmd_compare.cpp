@@ -52,7 +52,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
     throw UsageError("--nx: " + std::to_string(twod.nx) + " x " + std::to_string(twod.nz) +
                      " 2D cells; valid range nx * nz <= " + std::to_string(kMaxTwodCells));
   const std::vector<std::string> warnings =
-      twod_warnings(chute.steady(), twod.domain_height(chute.h0) / twod.nz);
+      twod_warnings(chute.steady(), twod.domain_height(chute.h0) / twod.nz, chute.Lx);
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave

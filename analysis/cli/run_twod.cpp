@@ -60,9 +60,9 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   const SteadyState base = o.flow.steady();
   Grid grid(int(o.nx), mo.settings.nz, o.Lx, Lz);
   grid.frame_speed = mo.settings.frame_fraction * base.u_surface;  // (twod/frame.hpp)
-  const std::vector<std::string> warnings = twod_warnings(base, grid.dz);
-  const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   const double wavelength = o.Lx / o.mode;
+  const std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
+  const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so
   // a restart with the same options continues the first run's grids.
   RunSchedule schedule;

@@ -1,5 +1,6 @@
-// The physics warnings of a 2D run (physics_warnings.hpp): an ill-posed base state and a grid
-// coarser than 32 cells per h0 are named; a well-posed base state on the trusted grid gets none.
+// The physics warnings of a 2D run (physics_warnings.hpp): an ill-posed base state, a grid
+// coarser than 32 cells per h0 and a wave shorter than 7.5 h0 on fewer than 64 cells per h0 are
+// named; a well-posed base state's 8 cm wave on the trusted grid gets none.
 #include <gtest/gtest.h>
 
 #include "analysis/cli/physics_warnings.hpp"
@@ -17,16 +18,28 @@ SteadyState section7(CurveKind kind, double angle_deg) {
 TEST(PhysicsWarnings, IllPosedBaseStateAndCoarseGridAreNamed) {
   const SteadyState good = section7(CurveKind::Regularised, 28.5);
   ASSERT_TRUE(good.well_posed);
-  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 32.0).empty());
-  EXPECT_TRUE(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0).empty());  // the default grid, mid-cell
-  const auto coarse = cli::twod_warnings(good, 4e-3 / 16.0);
+  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 32.0, 0.08).empty());
+  EXPECT_TRUE(
+      cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.08).empty());  // the default grid, mid-cell
+  const auto coarse = cli::twod_warnings(good, 4e-3 / 16.0, 0.08);
   ASSERT_EQ(coarse.size(), 1u);
   EXPECT_NE(coarse[0].find("16 cells per h0"), std::string::npos) << coarse[0];
 
   // Jop's curve is ill posed at high inertial number (§3): the steepest slope it allows.
   const SteadyState steep = section7(CurveKind::Jop, 29.0);
   ASSERT_FALSE(steep.well_posed) << "I_zeta " << steep.I_zeta;
-  const auto w = cli::twod_warnings(steep, 4e-3 / 32.0);
+  const auto w = cli::twod_warnings(steep, 4e-3 / 32.0, 0.08);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("ill posed"), std::string::npos) << w[0];
+}
+
+TEST(PhysicsWarnings, AShortWaveIsNamedBelowSixtyFourCellsPerDepth) {
+  const SteadyState good = section7(CurveKind::Regularised, 28.5);
+  // 2 cm = 5 h0 on the default grid (31.5 cells per h0, the surface mid-cell): named
+  const auto w = cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.02);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("short wave (5 h0)"), std::string::npos) << w[0];
+  // 3 cm = 7.5 h0 (within 5 % at 32 cells per h0) and 2 cm on 64 cells per h0: not named
+  EXPECT_TRUE(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.03).empty());
+  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 63.5, 0.02).empty());
 }

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "analysis/cli/physics_warnings.hpp"
+
 namespace granbench::cli {
 
 namespace {
@@ -150,6 +152,11 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});
+    const double shortest = *std::min_element(spec.Lx.begin(), spec.Lx.end());
+    plan.warnings = twod_warnings(
+        o.flow.steady(), spec.twod_settings.domain_height(o.flow.h0) / spec.twod_settings.nz,
+        shortest);
+    settings["warnings"] = plan.warnings;
     title << ", 2D grid " << spec.twod_settings.nx << "x" << spec.twod_settings.nz
           << " at 8 cm (at least " << spec.twod_settings.nx << " cells along x, dx at most "
           << 1e3 * TwodSettings::reference_length / spec.twod_settings.nx << " mm)";

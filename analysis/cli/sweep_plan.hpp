@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/run_model.hpp"
@@ -40,6 +41,9 @@ struct SweepPlan {
   SweepSpec spec;
   nlohmann::json settings;  // the command's own keys for the JSON
   std::string title;        // the table's first line
+  // The 2D points' physics warnings (physics_warnings.hpp; the grid's, and the shortest wave's),
+  // printed before the run and listed under "warnings" in the JSON.
+  std::vector<std::string> warnings;
 };
 // After parsing `app` (for which options were given). UsageError for an option that does not
 // apply to the chosen --model, or for a bad value.

@@ -157,4 +157,24 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
   std::filesystem::remove(spec.out);
 }
 
+// The 2D points' physics warnings (physics_warnings.hpp) come with the plan: a sweep that reaches
+// a wave of 5 h0 on the default grid names it; one that starts at 4 cm does not, nor does a
+// depth-averaged sweep.
+TEST(SweepSettings, AShortTwodWaveIsWarnedOf) {
+  auto warnings = [](const std::string& model, const std::string& Lx) {
+    CLI::App app;
+    SweepOptions o;
+    add_sweep_options(app, o);
+    std::vector<std::string> args = {"--model", model, "--Lx", Lx};
+    std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+    app.parse(args);
+    return plan_sweep(o, app).warnings;
+  };
+  const auto shortest = warnings("twod", "0.02:0.08:4");
+  ASSERT_EQ(shortest.size(), 1u);
+  EXPECT_NE(shortest[0].find("short wave (5 h0)"), std::string::npos) << shortest[0];
+  EXPECT_TRUE(warnings("both", "0.04:0.08:3").empty());
+  EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4").empty());
+}
+
 }  // namespace

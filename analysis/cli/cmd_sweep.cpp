@@ -16,7 +16,6 @@
 // The options and the spec they make: sweep_plan.hpp.
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/help_footer.hpp"
-#include "analysis/cli/physics_warnings.hpp"
 #include "analysis/cli/sweep_models.hpp"
 #include "analysis/cli/sweep_plan.hpp"
 
@@ -34,8 +33,7 @@ void add_sweep_command(CLI::App& app) {
   add_threads_option(*sub);
   sub->callback([o, sub] {
     SweepPlan plan = plan_sweep(*o, *sub);
-    print_warnings(plan.warnings);
-    run_sweep_command(std::move(plan.spec), o->output, plan.settings, plan.title);
+    run_sweep_command(std::move(plan.spec), o->output, plan.settings, plan.title, plan.warnings);
   });
 }
 

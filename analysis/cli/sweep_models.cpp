@@ -12,6 +12,7 @@
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/mpi_session.hpp"
 #include "analysis/cli/output_checks.hpp"
+#include "analysis/cli/physics_warnings.hpp"
 #include "analysis/cli/run_model.hpp"
 #include "analysis/cli/sweep_report.hpp"
 #include "common/output_lock.hpp"
@@ -31,7 +32,8 @@ struct SharedSweep {
 
 // Steps 1-3 of sweep_models.hpp. Every rank takes the same path through the collective calls;
 // errors come back as values, to be raised after MPI_Finalize.
-SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
+SharedSweep run_shared(SweepSpec spec, const OutputOptions& output,
+                       const std::vector<std::string>& warnings) {
   MpiSession mpi;
   SharedSweep s;
   s.root = mpi.root();
@@ -60,6 +62,7 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
     }
   kept = mpi.broadcast(kept);
   if (kept[0] == 0.0) return s;
+  if (s.root) print_warnings(warnings);  // (every check has passed)
   auto finished = unpack_points(std::span(kept).subspan(1));
   for (SweepPoint& p : finished) p.resumed = true;
 
@@ -101,13 +104,13 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output) {
 }  // namespace
 
 void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohmann::json& settings,
-                       const std::string& title) {
+                       const std::string& title, const std::vector<std::string>& warnings) {
   // Points are kept in the HDF5 file as they finish: that file is what a re-run resumes from.
   const bool keep_data = !output.out.empty();
   spec.out = keep_data ? output.out : (!output.plot.empty() ? output.plot + ".data.h5" : "");
   if (!spec.out.empty()) require_writable(spec.out, keep_data ? "--out" : "--plot");  // before work
   const auto start = std::chrono::steady_clock::now();
-  const SharedSweep s = run_shared(spec, output);
+  const SharedSweep s = run_shared(spec, output, warnings);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!s.refused.empty()) throw UsageError("--out: " + s.refused);

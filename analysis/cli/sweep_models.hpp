@@ -15,14 +15,17 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/comparison/sweep.hpp"
 
 namespace granbench::cli {
 
-// `settings`: the command's own keys for the JSON (chi, nx, ...); `title`: the table's first line.
+// `settings`: the command's own keys for the JSON (chi, nx, ...); `title`: the table's first line;
+// `warnings`: printed once every check has passed, before the points run (physics_warnings.hpp).
 void run_sweep_command(SweepSpec spec, const OutputOptions& output, const nlohmann::json& settings,
-                       const std::string& title);
+                       const std::string& title, const std::vector<std::string>& warnings);
 
 }  // namespace granbench::cli

@@ -42,7 +42,7 @@ struct SweepPlan {
   nlohmann::json settings;  // the command's own keys for the JSON
   std::string title;        // the table's first line
   // The 2D points' physics warnings (physics_warnings.hpp; the grid's, and the shortest wave's),
-  // printed before the run and listed under "warnings" in the JSON.
+  // printed once the sweep's checks have passed and listed under "warnings" in the JSON.
   std::vector<std::string> warnings;
 };
 // After parsing `app` (for which options were given). UsageError for an option that does not

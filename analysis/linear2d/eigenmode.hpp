@@ -66,7 +66,8 @@ class Eigenmode {
 };
 
 // One call for seeding: the surface eigenmode of the Bagnold state of `curve` at wavelength Lx
-// (linear_stability_2d with opt, then the Eigenmode of its surface pair).
+// (the mode linear_stability_2d with opt reports, computed alone; opt.N_check and
+// opt.light_layer are not used).
 Eigenmode surface_eigenmode(const SteadyState& s, const MuCurve& curve, double Lx,
                             const Linear2DOptions& opt = {});
 

@@ -41,6 +41,14 @@ std::complex<double> nearest(const std::vector<std::complex<double>>& set,
     return std::abs(a - target) < std::abs(b - target);
   });
 }
+
+// The mode at k_hat nearest `target` (spectrum's pencil and shift, without the full spectrum).
+std::complex<double> nearest_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
+                                  std::complex<double> target) {
+  if (!(k_hat > 0.0)) throw std::invalid_argument("linear stability needs k_hat > 0");
+  return nearest_finite_eigenvalue(assemble_pencil(b, k_hat, ChebyshevGrid(N), map),
+                                   default_shift(b, k_hat), target);
+}
 }  // namespace
 
 std::vector<std::complex<double>> spectrum(const LinearBaseState& b, double k_hat, int N,
@@ -60,22 +68,30 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
   const double c = kinematic_speed(b);
   double k = std::min(k_hat, path.k_start);
   std::complex<double> guess(0.0, -c * k);
-  std::complex<double> lambda = nearest(spectrum(b, k, path.N, path_map), guess);
+  std::complex<double> lambda = nearest_mode(b, k, path.N, path_map, guess);
   while (std::abs(lambda - guess) > 0.05 * c * k && k > 1e-8) {
     k *= 0.1;
     guess = {0.0, -c * k};
-    lambda = nearest(spectrum(b, k, path.N, path_map), guess);
+    lambda = nearest_mode(b, k, path.N, path_map, guess);
   }
   if (std::abs(lambda - guess) > 0.05 * c * k)
     throw std::runtime_error("linear stability: no kinematic wave found in the long-wave limit");
   while (k < k_hat) {
     const double k_next = std::min(k_hat, k * path.step_ratio);
     guess = lambda * (k_next / k);  // phase speed and growth/k vary slowly along the branch
-    lambda = nearest(spectrum(b, k_next, path.N, path_map), guess);
+    lambda = nearest_mode(b, k_next, path.N, path_map, guess);
     k = k_next;
   }
   if (N == path.N && map == path_map) return lambda;
-  return nearest(spectrum(b, k_hat, N, map), lambda);
+  return nearest_mode(b, k_hat, N, map, lambda);
+}
+
+Eigenpair surface_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
+                       const ContinuationOptions& path) {
+  // As linear_stability_2d picks it: continued at path.N, then the nearest mode at N.
+  const std::complex<double> continued = surface_mode_eigenvalue(b, k_hat, path.N, map, path);
+  const Pencil P = assemble_pencil(b, k_hat, ChebyshevGrid(N), map);
+  return eigenpair(P, nearest_finite_eigenvalue(P, default_shift(b, k_hat), continued));
 }
 
 std::vector<BranchPoint> surface_branch(const LinearBaseState& b, const std::vector<double>& k_hat,

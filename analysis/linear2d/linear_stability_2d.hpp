@@ -54,6 +54,11 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
                                              VerticalMap map = VerticalMap::SquareRoot,
                                              const ContinuationOptions& path = {});
 
+// The surface mode at k_hat with its eigenvector at resolution N, without the rest of the
+// spectrum: the mode linear_stability_2d reports, at a fraction of its cost (for seeding).
+Eigenpair surface_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
+                       const ContinuationOptions& path = {});
+
 // The surface branch over increasing k_hat values (continued point to point), with the largest
 // growth rate among the other modes at each k_hat (NaN if none is finite).
 struct BranchPoint {

@@ -90,6 +90,22 @@ std::vector<std::complex<double>> finite_eigenvalues_two_shifts(const Pencil& P,
   return out;
 }
 
+std::complex<double> nearest_finite_eigenvalue(const Pencil& P, std::complex<double> shift,
+                                               std::complex<double> target,
+                                               const SpectrumOptions& opt) {
+  const auto distance = [target](auto a, auto b) {
+    return std::abs(a - target) < std::abs(b - target);
+  };
+  const auto candidates = shift_invert_eigenvalues(P, shift, opt);
+  if (!candidates.empty()) {
+    const auto best = *std::min_element(candidates.begin(), candidates.end(), distance);
+    if (eigenpair(P, best).residual <= opt.residual_tolerance) return best;
+  }
+  const auto confirmed = finite_eigenvalues(P, shift, opt);
+  if (confirmed.empty()) throw std::runtime_error("linear stability: no finite eigenvalue found");
+  return *std::min_element(confirmed.begin(), confirmed.end(), distance);
+}
+
 Eigenpair eigenpair(const Pencil& P, std::complex<double> lambda) {
   // Inverse iteration: (A - lambda B) x_{j+1} = B x_j. With lambda accurate to round-off the
   // matrix is numerically singular and one or two steps give the eigenvector.

@@ -3,6 +3,7 @@
 // conditions they must satisfy.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -119,4 +120,50 @@ TEST(Linear2DOperator, SurfaceLayerScalingActsOnlyInsideTheLayer) {
     EXPECT_EQ((plain.A.row(plain.normal() + j) - scaled.A.row(plain.normal() + j)).norm(), 0.0);
   }
   EXPECT_GT(changed_inside, 0);
+}
+
+// Following one mode without QZ: the nearest shift-and-invert value, accepted on its residual, is
+// the nearest QZ-confirmed eigenvalue; a target beside the spurious values of the infinite
+// eigenvalue's Jordan blocks (|lambda| ~ 5e7 at k_hat = 0.02) falls back to the confirmed set.
+TEST(Linear2DSpectrum, NearestModeWithoutQzIsTheConfirmedNearest) {
+  const Material m;
+  const MuCurve curve(CurveKind::Regularised, m, 4e-3);
+  const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
+  const LinearBaseState b = mu_i_base_state(s, curve);
+  for (int N : {16, 32})
+    for (double k : {0.02, 0.314, 1.2566}) {
+      const Pencil P = assemble_pencil(b, k, ChebyshevGrid(N), VerticalMap::SquareRoot);
+      const std::complex<double> shift(0.05, -0.5 * (2.5 + b.U_surface()) * k - 0.0137);
+      const auto confirmed = finite_eigenvalues(P, shift);
+      ASSERT_EQ(static_cast<int>(confirmed.size()), N) << "N = " << N << ", k_hat = " << k;
+      auto nearest_confirmed = [&](std::complex<double> target) {
+        return *std::min_element(confirmed.begin(), confirmed.end(), [&](auto x, auto y) {
+          return std::abs(x - target) < std::abs(y - target);
+        });
+      };
+      for (const auto& lambda : confirmed) {
+        const std::complex<double> target = lambda * std::complex<double>(1.0 + 1e-3, 1e-3);
+        EXPECT_EQ(nearest_finite_eigenvalue(P, shift, target), nearest_confirmed(target))
+            << "N = " << N << ", k_hat = " << k << ", lambda = " << lambda;
+      }
+      for (const std::complex<double> target :
+           {std::complex<double>(4.66e7, -2.6e6), std::complex<double>(-4.66e7, 2.6e6)})
+        EXPECT_EQ(nearest_finite_eigenvalue(P, shift, target), nearest_confirmed(target));
+    }
+}
+
+// The seed's surface mode is the one linear_stability_2d reports, computed alone.
+TEST(Linear2DSpectrum, SurfaceModeAloneIsTheReportedSurfaceMode) {
+  const Material m;
+  const MuCurve curve(CurveKind::Regularised, m, 4e-3);
+  const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
+  for (double Lx : {0.02, 0.08, 0.3}) {
+    Linear2DOptions opt;
+    opt.N_check = 0;
+    const Linear2DResult r = linear_stability_2d(s, curve, Lx, opt);
+    const Eigenpair alone = surface_mode(r.base, r.k_hat, opt.N, opt.map, opt.path);
+    EXPECT_EQ(alone.lambda, r.surface.lambda_hat) << "Lx = " << Lx;
+    EXPECT_LT(alone.residual, 1e-12) << "Lx = " << Lx;
+    EXPECT_LT((alone.v - r.surface_pair.v).norm(), 1e-12) << "Lx = " << Lx;
+  }
 }

@@ -49,6 +49,14 @@ std::complex<double> nearest_mode(const LinearBaseState& b, double k_hat, int N,
   return nearest_finite_eigenvalue(assemble_pencil(b, k_hat, ChebyshevGrid(N), map),
                                    default_shift(b, k_hat), target);
 }
+
+// The same along a path, where the target is close: by inverse iteration.
+std::complex<double> followed_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
+                                   std::complex<double> target) {
+  if (!(k_hat > 0.0)) throw std::invalid_argument("linear stability needs k_hat > 0");
+  return nearest_eigenvalue_by_inverse_iteration(assemble_pencil(b, k_hat, ChebyshevGrid(N), map),
+                                                 default_shift(b, k_hat), target);
+}
 }  // namespace
 
 std::vector<std::complex<double>> spectrum(const LinearBaseState& b, double k_hat, int N,
@@ -68,21 +76,21 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
   const double c = kinematic_speed(b);
   double k = std::min(k_hat, path.k_start);
   std::complex<double> guess(0.0, -c * k);
-  std::complex<double> lambda = nearest_mode(b, k, path.N, path_map, guess);
+  std::complex<double> lambda = followed_mode(b, k, path.N, path_map, guess);
   while (std::abs(lambda - guess) > 0.05 * c * k && k > 1e-8) {
     k *= 0.1;
     guess = {0.0, -c * k};
-    lambda = nearest_mode(b, k, path.N, path_map, guess);
+    lambda = followed_mode(b, k, path.N, path_map, guess);
   }
   if (std::abs(lambda - guess) > 0.05 * c * k)
     throw std::runtime_error("linear stability: no kinematic wave found in the long-wave limit");
   while (k < k_hat) {
     const double k_next = std::min(k_hat, k * path.step_ratio);
     guess = lambda * (k_next / k);  // phase speed and growth/k vary slowly along the branch
-    lambda = nearest_mode(b, k_next, path.N, path_map, guess);
+    lambda = followed_mode(b, k_next, path.N, path_map, guess);
     k = k_next;
   }
-  if (N == path.N && map == path_map) return lambda;
+  // The path only steers: the eigenvalue returned is always the spectrum's at (N, map).
   return nearest_mode(b, k_hat, N, map, lambda);
 }
 

@@ -106,6 +106,27 @@ std::complex<double> nearest_finite_eigenvalue(const Pencil& P, std::complex<dou
   return *std::min_element(confirmed.begin(), confirmed.end(), distance);
 }
 
+std::complex<double> nearest_eigenvalue_by_inverse_iteration(const Pencil& P,
+                                                             std::complex<double> shift,
+                                                             std::complex<double> target,
+                                                             int max_iterations,
+                                                             const SpectrumOptions& opt) {
+  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(P.A - target * P.B);
+  const Eigen::Index n = P.A.rows();
+  Eigen::VectorXcd x = Eigen::VectorXcd::Ones(n) / std::sqrt(double(n));
+  std::complex<double> lambda = target;
+  for (int it = 0; it < max_iterations; ++it) {
+    const Eigen::VectorXcd y = lu.solve(P.B * x);
+    const double norm = y.norm();
+    if (!(norm > 0.0) || !std::isfinite(norm)) break;  // target on an eigenvalue, or no mode
+    const std::complex<double> next = target + 1.0 / x.dot(y);  // Rayleigh quotient, |x| = 1
+    x = y / norm;
+    if (std::abs(next - lambda) <= 1e-13 * std::abs(next)) return next;
+    lambda = next;
+  }
+  return nearest_finite_eigenvalue(P, shift, target, opt);
+}
+
 Eigenpair eigenpair(const Pencil& P, std::complex<double> lambda) {
   // Inverse iteration: (A - lambda B) x_{j+1} = B x_j. With lambda accurate to round-off the
   // matrix is numerically singular and one or two steps give the eigenvector.

@@ -55,6 +55,18 @@ std::complex<double> nearest_finite_eigenvalue(const Pencil& P, std::complex<dou
                                                std::complex<double> target,
                                                const SpectrumOptions& opt = {});
 
+// The same eigenvalue by inverse iteration with the fixed shift `target`, for a caller whose target
+// is close to it (the continuation of a branch): the dominant eigenvalue of (A - target B)^{-1} B
+// is the finite one nearest target, reached at the rate |lambda_1 - target| / |lambda_2 -
+// target| per iteration (8-30 iterations along the surface mode's path, about a tenth of a complex
+// Schur's cost). Agrees with nearest_finite_eigenvalue to about 1e-12 relative; when it has not
+// converged after `max_iterations` it returns nearest_finite_eigenvalue's value instead.
+std::complex<double> nearest_eigenvalue_by_inverse_iteration(const Pencil& P,
+                                                             std::complex<double> shift,
+                                                             std::complex<double> target,
+                                                             int max_iterations = 300,
+                                                             const SpectrumOptions& opt = {});
+
 struct Eigenpair {
   std::complex<double> lambda;  // scaled: growth = Re, phase speed = -Im/k_hat
   Eigen::VectorXcd v;           // eigenvector, |v| = 1

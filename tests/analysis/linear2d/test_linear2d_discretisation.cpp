@@ -167,3 +167,24 @@ TEST(Linear2DSpectrum, SurfaceModeAloneIsTheReportedSurfaceMode) {
     EXPECT_LT((alone.v - r.surface_pair.v).norm(), 1e-12) << "Lx = " << Lx;
   }
 }
+
+// Inverse iteration from a nearby target finds the same eigenvalue to round-off, and one that has
+// not converged hands over to the spectrum's nearest value.
+TEST(Linear2DSpectrum, InverseIterationFindsTheNearestMode) {
+  const Material m;
+  const MuCurve curve(CurveKind::Regularised, m, 4e-3);
+  const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
+  const LinearBaseState b = mu_i_base_state(s, curve);
+  for (double k : {0.02, 0.314, 1.2566}) {
+    const Pencil P = assemble_pencil(b, k, ChebyshevGrid(16), VerticalMap::SquareRoot);
+    const std::complex<double> shift(0.05, -0.5 * (2.5 + b.U_surface()) * k - 0.0137);
+    for (const auto& lambda : finite_eigenvalues(P, shift)) {
+      const std::complex<double> target = lambda * std::complex<double>(1.0 + 1e-3, 1e-3);
+      const auto reference = nearest_finite_eigenvalue(P, shift, target);
+      EXPECT_LT(std::abs(nearest_eigenvalue_by_inverse_iteration(P, shift, target) - reference),
+                1e-11 * std::abs(reference))
+          << "k_hat = " << k << ", lambda = " << lambda;
+      EXPECT_EQ(nearest_eigenvalue_by_inverse_iteration(P, shift, target, 1), reference);
+    }
+  }
+}

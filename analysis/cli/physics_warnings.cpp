@@ -8,7 +8,7 @@ namespace granbench::cli {
 
 std::vector<std::string> twod_warnings(const SteadyState& base, double dz, double wavelength) {
   std::vector<std::string> w;
-  char buf[256];
+  char buf[512];
   if (!base.well_posed) {
     std::snprintf(
         buf, sizeof buf,
@@ -32,7 +32,8 @@ std::vector<std::string> twod_warnings(const SteadyState& base, double dz, doubl
     std::snprintf(buf, sizeof buf,
                   "a short wave (%.3g h0) on %.3g cells per h0: the surface layer's error grows as "
                   "the wave shortens; at 32 cells per h0 a wave of 5 h0 measured 11 %% under the "
-                  "exact 2D theory, at %.0f within 5 %% (docs/twod-validation.md §3)",
+                  "exact 2D theory, at %.0f within 5 %% (`--resolution fine`, or `--nz 128` with "
+                  "`run`; docs/twod-validation.md §3)",
                   wave_depths, cells_per_depth, kShortWaveCellsPerDepth);
     w.emplace_back(buf);
   }

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace granbench::linear2d {
@@ -81,10 +80,8 @@ Eigenmode::Fields Eigenmode::seeded_state(double x, double z, double a) const {
 Eigenmode surface_eigenmode(const SteadyState& s, const MuCurve& curve, double Lx,
                             const Linear2DOptions& opt) {
   // The surface mode alone: the seed needs neither the other modes nor the convergence check.
-  if (!(Lx > 0.0)) throw std::invalid_argument("linear stability needs Lx > 0");
-  if (opt.N < 4) throw std::invalid_argument("linear stability needs N >= 4");
+  const double k_hat = scaled_wavenumber(s, Lx);
   const LinearBaseState b = mu_i_base_state(s, curve);
-  const double k_hat = 2.0 * std::numbers::pi * s.h0 / Lx;  // (7.13b)
   return Eigenmode(s, b, k_hat, ChebyshevGrid(opt.N), opt.map,
                    surface_mode(b, k_hat, opt.N, opt.map, opt.path));
 }

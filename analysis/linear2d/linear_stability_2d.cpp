@@ -94,8 +94,14 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
   return nearest_mode(b, k_hat, N, map, lambda);
 }
 
+double scaled_wavenumber(const SteadyState& s, double Lx) {
+  if (!(Lx > 0.0)) throw std::invalid_argument("linear stability needs Lx > 0");
+  return 2.0 * std::numbers::pi * s.h0 / Lx;  // (7.13b)
+}
+
 Eigenpair surface_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
                        const ContinuationOptions& path) {
+  if (N < 4) throw std::invalid_argument("linear stability needs N >= 4");
   // As linear_stability_2d picks it: continued at path.N, then the nearest mode at N.
   const std::complex<double> continued = surface_mode_eigenvalue(b, k_hat, path.N, map, path);
   const Pencil P = assemble_pencil(b, k_hat, ChebyshevGrid(N), map);
@@ -187,11 +193,10 @@ Linear2DLightLayerResult light_layer_modes(const SteadyState& s, const Linear2DR
 Linear2DResult linear_stability_2d(const SteadyState& s, const MuCurve& curve, double Lx,
                                    const Linear2DOptions& opt) {
   using namespace linear2d;
-  if (!(Lx > 0.0)) throw std::invalid_argument("linear stability needs Lx > 0");
   if (opt.N < 4) throw std::invalid_argument("linear stability needs N >= 4");
   Linear2DResult r;
   r.Lx = Lx;
-  r.k_hat = 2.0 * std::numbers::pi * s.h0 / Lx;  // (7.13b)
+  r.k_hat = scaled_wavenumber(s, Lx);
   r.N = opt.N;
   r.N_check = opt.N_check > opt.N ? opt.N_check : 0;
   r.base = mu_i_base_state(s, curve);

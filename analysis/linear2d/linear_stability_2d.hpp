@@ -54,7 +54,10 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
                                              VerticalMap map = VerticalMap::SquareRoot,
                                              const ContinuationOptions& path = {});
 
-// The surface mode at k_hat with its eigenvector at resolution N, without the rest of the
+// The scaled wavenumber k_hat = 2 pi h0 / Lx of (7.13b); Lx > 0 [m].
+double scaled_wavenumber(const SteadyState& s, double Lx);
+
+// The surface mode at k_hat with its eigenvector at resolution N >= 4, without the rest of the
 // spectrum: the mode linear_stability_2d reports, at a fraction of its cost (for seeding).
 Eigenpair surface_mode(const LinearBaseState& b, double k_hat, int N, VerticalMap map,
                        const ContinuationOptions& path = {});

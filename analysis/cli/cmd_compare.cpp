@@ -42,7 +42,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   TwodSettings twod;
   twod.nx = res.twod_nx;
   twod.nx = o.nx > 0 ? o.nx : twod.cells_along(chute.Lx);  // the preset's, as sweep's points
-  twod.nz = o.nz > 0 ? o.nz : res.twod_nz;
+  twod.nz = res.twod_nz;
+  twod.nz = o.nz > 0 ? o.nz : twod.cells_across(chute.Lx, chute.h0);  // as sweep's points
   twod.viscosity_passes = o.viscosity_passes;
   twod.frame_fraction = o.twod_frame;
   // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of

@@ -136,6 +136,10 @@ void add_run_command(CLI::App& app) {
         run_depthavg(*run, *depthavg);
         break;
       case Model::TwoD:
+        // Without --nz (on the command line or in a --config file), the cells across the layer
+        // that compare and sweep give the seeded wave: 64, more for a wave under 7.5 h0.
+        if (sub->count("--nz") == 0)
+          twod->settings.nz = twod->settings.cells_across(run->Lx / run->mode, run->flow.h0);
         run_twod(*run, *twod);
         break;
     }

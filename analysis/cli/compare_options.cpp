@@ -21,13 +21,16 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
       ->check(positive());
   sub.add_option("--resolution", o.resolution,
                  "grids at Lx = 8 cm {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / "
-                 "512}; at another Lx, at least these 2D cells along x and at most their dx")
+                 "512}; at another Lx, at least these 2D cells along x and at most their dx, and "
+                 "for a wave under 7.5 h0 up to twice the 2D cells across the layer")
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
   sub.add_option("--nx", o.nx, "2D cells along x (overrides --resolution), in [8, 65536]")
       ->check(CLI::Range(8, 65536));
-  sub.add_option("--nz", o.nz, "2D cells across Lz ~ 2 h0 (overrides --resolution), in [4, 4096]")
+  sub.add_option("--nz", o.nz,
+                 "2D cells across Lz ~ 2 h0 (overrides --resolution and its refinement for short "
+                 "waves), in [4, 4096]")
       ->check(CLI::Range(4, 4096));
   sub.add_option("--nx-depthavg", o.nx_depthavg,
                  "depth-averaged cells (overrides --resolution), in [8, 1048576]")

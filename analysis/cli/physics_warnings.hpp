@@ -4,9 +4,11 @@
 //    amplify short waves without bound and results depend on the grid (§3-§5);
 //  - the grid has fewer than 32 cells per h0, the resolution below which the measured 2D growth
 //    rate is more than 10 % under the exact 2D theory (docs/twod-validation.md, the README);
-//  - the wave is shorter than 7.5 h0 on fewer than 64 cells per h0: the surface layer's error
-//    grows as the wave shortens (order 1.4 in dz), and at 32 cells per h0 the section 7 case's
-//    wave of 5 h0 is 11 % under the theory, its slow branch too (docs/twod-validation.md §3).
+//  - the wave is shorter than 7.5 h0 on fewer cells per h0 than the default grids give it
+//    (TwodSettings::cells_across: 32 per h0 refined as 7.5 h0 / wavelength, up to 64): the surface
+//    layer's error grows as the wave shortens (order 1.4 in dz), and at 32 cells per h0 the
+//    section 7 case's wave of 5 h0 is 11 % under the theory, its slow branch too
+//    (docs/twod-validation.md §3).
 #pragma once
 
 #include <string>
@@ -17,10 +19,6 @@
 namespace granbench::cli {
 
 inline constexpr double kTrustedCellsPerDepth = 32.0;
-// The shortest wave, in h0, that the trusted grid measures within 10 % (the section 7 case: 3 cm
-// within 5 %, 2 cm 11 % under), and the cells per h0 that bring 2 cm within 5 %.
-inline constexpr double kShortestTrustedWavelength = 7.5;
-inline constexpr double kShortWaveCellsPerDepth = 64.0;
 
 // wavelength: the seeded wave's length [m] (Lx / mode).
 std::vector<std::string> twod_warnings(const SteadyState& base, double dz, double wavelength);

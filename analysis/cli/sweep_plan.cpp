@@ -81,7 +81,8 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
       ->check(positive());
   sub.add_option("--resolution", o.resolution,
                  "2D grid of --model twod|both at Lx = 8 cm {coarse: 80x32, default: 160x64, fine: "
-                 "320x128}; at another Lx, at least these cells along x and at most their dx")
+                 "320x128}; at another Lx, at least these cells along x and at most their dx, and "
+                 "for a wave under 7.5 h0 up to twice the cells across the layer")
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   sub.add_option("--twod-frame", o.twod_frame,
@@ -153,13 +154,16 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});
     const double shortest = *std::min_element(spec.Lx.begin(), spec.Lx.end());
-    plan.warnings = twod_warnings(
-        o.flow.steady(), spec.twod_settings.domain_height(o.flow.h0) / spec.twod_settings.nz,
-        shortest);
+    TwodSettings at_shortest = spec.twod_settings;  // the grid its point runs on (sweep.cpp)
+    at_shortest.nz = at_shortest.cells_across(shortest, o.flow.h0);
+    plan.warnings = twod_warnings(o.flow.steady(),
+                                  at_shortest.domain_height(o.flow.h0) / at_shortest.nz, shortest);
     settings["warnings"] = plan.warnings;
     title << ", 2D grid " << spec.twod_settings.nx << "x" << spec.twod_settings.nz
           << " at 8 cm (at least " << spec.twod_settings.nx << " cells along x, dx at most "
-          << 1e3 * TwodSettings::reference_length / spec.twod_settings.nx << " mm)";
+          << 1e3 * TwodSettings::reference_length / spec.twod_settings.nx
+          << " mm; more cells across the layer for waves under "
+          << TwodSettings::longest_wave_to_refine << " h0)";
   }
   plan.title = title.str();
   return plan;

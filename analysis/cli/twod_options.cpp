@@ -20,7 +20,9 @@ std::vector<std::string> mixing_names() {
 }  // namespace
 
 void add_twod_options(CLI::App& app, TwodOptions& o) {
-  app.add_option("--nz", o.settings.nz, "twod: cells along z, in [4, 4096]")
+  app.add_option("--nz", o.settings.nz,
+                 "twod: cells along z, in [4, 4096]; default 64, and for a wave (Lx / mode) under "
+                 "7.5 h0 up to twice that, as compare and sweep")
       ->check(CLI::Range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,

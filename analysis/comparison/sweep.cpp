@@ -66,11 +66,13 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.message = r.message;
 }
 
-// The 2D settings of a point of length Lx: the preset's cells along it (cells_along), and the
-// --jobs workers sharing the 2D solver's threads (oversubscribed threads wait on each other).
+// The 2D settings of a point of length Lx: the preset's cells along it (cells_along) and across
+// the layer for its wavelength (cells_across), and the --jobs workers sharing the 2D solver's
+// threads (oversubscribed threads wait on each other).
 TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
   TwodSettings twod = spec.twod_settings;
   twod.nx = twod.cells_along(Lx);
+  twod.nz = twod.cells_across(Lx, spec.chute.h0);
   twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
   return twod;
 }

@@ -52,7 +52,11 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           // How nx becomes the cells along another length (cells_along): 2, at least nx cells and
           // at most their dx at 8 cm (since 3 December); a sweep file without it kept the dx
           // alone, and its points are not resumed on the new grids.
-          {"nx_rule", 2.0}};
+          {"nx_rule", 2.0},
+          // How nz becomes the cells across the layer for a shorter wave (cells_across): 1, the
+          // preset's nz refined for waves under 7.5 h0 (since 5 December); a sweep file without
+          // it kept nz at every length, and its short points are not resumed on the new grids.
+          {"nz_rule", 1.0}};
 }
 
 }  // namespace granbench

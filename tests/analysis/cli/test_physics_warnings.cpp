@@ -1,6 +1,7 @@
 // The physics warnings of a 2D run (physics_warnings.hpp): an ill-posed base state, a grid
-// coarser than 32 cells per h0 and a wave shorter than 7.5 h0 on fewer than 64 cells per h0 are
-// named; a well-posed base state's 8 cm wave on the trusted grid gets none.
+// coarser than 32 cells per h0 and a wave shorter than 7.5 h0 on fewer cells per h0 than compare
+// and sweep give it (32 refined as 7.5 h0 / wavelength) are named; a well-posed base state's 8 cm
+// wave on the trusted grid gets none.
 #include <gtest/gtest.h>
 
 #include "analysis/cli/physics_warnings.hpp"
@@ -33,13 +34,18 @@ TEST(PhysicsWarnings, IllPosedBaseStateAndCoarseGridAreNamed) {
   EXPECT_NE(w[0].find("ill posed"), std::string::npos) << w[0];
 }
 
-TEST(PhysicsWarnings, AShortWaveIsNamedBelowSixtyFourCellsPerDepth) {
+TEST(PhysicsWarnings, AShortWaveIsNamedBelowItsRefinedGrid) {
   const SteadyState good = section7(CurveKind::Regularised, 28.5);
-  // 2 cm = 5 h0 on the default grid (31.5 cells per h0, the surface mid-cell): named
+  // 2 cm = 5 h0 on 64 cells (31.5 cells per h0, the surface mid-cell): named, with the 48 cells
+  // per h0 that compare and sweep give it
   const auto w = cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.02);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("short wave (5 h0)"), std::string::npos) << w[0];
-  // 3 cm = 7.5 h0 (within 5 % at 32 cells per h0) and 2 cm on 64 cells per h0: not named
+  EXPECT_NE(w[0].find("default grids put 48 cells per h0 across"), std::string::npos) << w[0];
+  // 2.5 cm = 6.25 h0 needs 38.4: named on 31.5, not on compare's 80 cells (39.5 per h0)
+  EXPECT_EQ(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.025).size(), 1u);
+  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 39.5, 0.025).empty());
+  // 3 cm = 7.5 h0 (within 5 % at 32 cells per h0) and 2 cm on compare's 96 cells: not named
   EXPECT_TRUE(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.03).empty());
-  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 63.5, 0.02).empty());
+  EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 47.5, 0.02).empty());
 }

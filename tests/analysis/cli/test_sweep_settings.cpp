@@ -157,24 +157,28 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
   std::filesystem::remove(spec.out);
 }
 
-// The 2D points' physics warnings (physics_warnings.hpp) come with the plan: a sweep that reaches
-// a wave of 5 h0 on the default grid names it; one that starts at 4 cm does not, nor does a
-// depth-averaged sweep.
-TEST(SweepSettings, AShortTwodWaveIsWarnedOf) {
-  auto warnings = [](const std::string& model, const std::string& Lx) {
+// The 2D points' physics warnings (physics_warnings.hpp) come with the plan. A sweep that reaches
+// a wave of 5 h0 runs it on more cells across the layer (TwodSettings::cells_across) and is not
+// warned of it on the default preset; on the coarse preset it is (and of the coarse grid). A
+// depth-averaged sweep gets none.
+TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
+  auto warnings = [](const std::string& model, const std::string& Lx,
+                     const std::string& resolution) {
     CLI::App app;
     SweepOptions o;
     add_sweep_options(app, o);
     std::vector<std::string> args = {"--model", model, "--Lx", Lx};
+    if (!resolution.empty()) args.insert(args.end(), {"--resolution", resolution});
     std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
     app.parse(args);
     return plan_sweep(o, app).warnings;
   };
-  const auto shortest = warnings("twod", "0.02:0.08:4");
-  ASSERT_EQ(shortest.size(), 1u);
-  EXPECT_NE(shortest[0].find("short wave (5 h0)"), std::string::npos) << shortest[0];
-  EXPECT_TRUE(warnings("both", "0.04:0.08:3").empty());
-  EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4").empty());
+  EXPECT_TRUE(warnings("twod", "0.02:0.08:4", "").empty());
+  EXPECT_TRUE(warnings("both", "0.04:0.08:3", "default").empty());
+  const auto coarse = warnings("twod", "0.02:0.08:4", "coarse");
+  ASSERT_EQ(coarse.size(), 2u);
+  EXPECT_NE(coarse[1].find("short wave (5 h0)"), std::string::npos) << coarse[1];
+  EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4", "").empty());
 }
 
 }  // namespace

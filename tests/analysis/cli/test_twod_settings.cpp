@@ -37,6 +37,26 @@ TEST(TwodSettings, OtherLengthsKeepThePresetsCellsAndAtMostItsDx) {
   EXPECT_EQ(s.cells_along(0.16), 160);
 }
 
+TEST(TwodSettings, ShortWavesGetMoreCellsAcrossTheLayer) {
+  // compare and sweep take nz from here: the preset's for waves of 7.5 h0 and longer, refined as
+  // 7.5 h0 / wavelength below it (at most twice), in multiples of 16 for the multigrid.
+  TwodSettings s;
+  s.nz = 64;
+  const double h0 = 4e-3;
+  EXPECT_EQ(s.cells_across(0.08, h0), 64);
+  EXPECT_EQ(s.cells_across(0.03, h0), 64);   // 7.5 h0
+  EXPECT_EQ(s.cells_across(0.025, h0), 80);  // 76.8 rounded up
+  EXPECT_EQ(s.cells_across(0.02, h0), 96);   // 5 h0: 48 cells per h0
+  EXPECT_EQ(s.cells_across(0.01, h0), 128);  // 2.5 h0: capped at twice the preset's
+  EXPECT_EQ(s.cells_across(0.025, 5e-3), 96);
+  s.nz = 32;  // the coarse preset
+  EXPECT_EQ(s.cells_across(0.02, h0), 48);
+  // the domain stays about 2 h0 high with the surface mid-cell: 47.5 cells below it at 2 cm
+  s.nz = 64;
+  s.nz = s.cells_across(0.02, h0);
+  EXPECT_NEAR(s.domain_height(h0) / s.nz * 47.5, h0, 1e-15);
+}
+
 TEST(TwodSettings, RecordedRunCommandRebuildsTheSameSolverParameters) {
   ChuteCase c;
   c.angle_deg = 29.0;

@@ -1,0 +1,52 @@
+// The default 2D grids give a wave shorter than 7.5 h0 more cells across the layer
+// (TwodSettings::cells_across): `run --model twod` without --nz, and `compare`, put 96 cells
+// (48 per h0) across the 2 cm wave of the section 7 case and 64 across the 8 cm one; an explicit
+// --nz is kept. End to end: the grid is read back from each command's HDF5 output.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "common/hdf5_file.hpp"
+#include "tests/support/run_granbench.hpp"
+
+namespace {
+
+using granbench::testing::run_granbench;
+namespace fs = std::filesystem;
+
+class ShortWaveGrid : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("gb_short_wave_" + std::to_string(getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // The nz that `args` (a command writing --out) records under `key` in its file's root.
+  double recorded_nz(const std::string& args, const std::string& key) {
+    const std::string out = (dir_ / "out.h5").string();
+    fs::remove(out);
+    const auto r = run_granbench(args + " --quiet --out " + out, "short_wave");
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    return granbench::h5_read_double_attribute(out, "/", key);
+  }
+  fs::path dir_;
+};
+
+TEST_F(ShortWaveGrid, RunRefinesAcrossTheLayerUnlessNzIsGiven) {
+  const std::string run = "run --model twod --nx 16 --t-end 1e-4 --checkpoint-every 0 ";
+  EXPECT_EQ(recorded_nz(run + "--Lx 0.02", "nz"), 96.0);
+  EXPECT_EQ(recorded_nz(run + "--Lx 0.08 --mode 4", "nz"), 96.0);  // the wave, not the domain
+  EXPECT_EQ(recorded_nz(run + "--Lx 0.08", "nz"), 64.0);
+  EXPECT_EQ(recorded_nz(run + "--Lx 0.02 --nz 40", "nz"), 40.0);
+}
+
+TEST_F(ShortWaveGrid, CompareRefinesAcrossTheLayerUnlessNzIsGiven) {
+  const std::string compare = "compare --nx 16 --nx-depthavg 16 --t-end 1e-3 ";
+  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02", "twod_nz"), 96.0);
+  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02 --resolution coarse", "twod_nz"), 48.0);
+  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02 --nz 40", "twod_nz"), 40.0);
+}
+
+}  // namespace

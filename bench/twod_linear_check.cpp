@@ -20,7 +20,8 @@
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
 //     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
 //     row_shear=1 row_tau=1 (surface_row_shear) interface_p=cell|extrapolated
-//     ambient=1 (ambient_pressure_gradient) (defaults: the solver's, twod/parameters.hpp)
+//     ambient=1 (ambient_pressure_gradient) effective_p=0 (Rheology::effective_pressure)
+//     (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)
 //     layer=<m> fn= fs= fq=   theory with eta_n, eta_s, q scaled in a surface layer
@@ -148,6 +149,7 @@ int main(int argc, char** argv) {
   params.cfl = a.num("cfl", params.cfl);
   rh.surface_row_shear_spacing = a.num("row_shear", rh.surface_row_shear_spacing ? 1 : 0) != 0;
   rh.ambient_pressure_gradient = a.num("ambient", rh.ambient_pressure_gradient ? 1 : 0) != 0;
+  rh.effective_pressure = a.num("effective_p", rh.effective_pressure ? 1 : 0) != 0;
   params.dt_max = a.num("dt_max", params.dt_max);
   params.viscous_tolerance = a.num("vtol", params.viscous_tolerance);
   params.solver_tolerance = a.num("ptol", params.solver_tolerance);

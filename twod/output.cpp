@@ -49,6 +49,7 @@ void write_parameters(H5Writer& out, const std::string& group, const Grid& g,
   a("rho_light", r.rho_light);
   a("eta_light", r.eta_light);
   a("ambient_pressure_gradient", r.ambient_pressure_gradient ? 1.0 : 0.0);
+  a("effective_pressure", r.effective_pressure ? 1.0 : 0.0);
   out.attribute(group, "viscosity_mixing", std::string(viscosity_mixing_name(r.mixing)));
   a("cfl", p.cfl);
   a("dt_max", p.dt_max);

@@ -76,7 +76,8 @@ Solver::Solver(const Grid& g, const SolverParams& params, Fields initial)
       projection_(g, params) {
   stats_.initial_volume = granular_volume(g_, s_.f);
   update_densities(g_, s_.f, params_.rheology, props_);
-  update_viscosity(g_, s_, model_, props_);
+  effective_pressure(g_, params_, s_.p, p_eta_);
+  update_viscosity(g_, s_, p_eta_, model_, props_);
 }
 
 void Solver::resume(long steps, double dt_last, double initial_volume) {
@@ -171,9 +172,9 @@ double Solver::step(double dt_limit) {
                          p_eta_);
     else
       viscosity_pressure(g_, params_, s_.p, h_before_, h_after_, p_eta_);
-    update_viscosity(g_, s_, p_eta_, model_, props_);
   } else
-    update_viscosity(g_, s_, model_, props_);
+    effective_pressure(g_, params_, s_.p, p_eta_);
+  update_viscosity(g_, s_, p_eta_, model_, props_);
   if (params_.surface_row_pressure)
     surface_row_pressure_correction(g_, params_, s_.f, force_u_);
   else
@@ -224,7 +225,8 @@ double Solver::step(double dt_limit) {
   stats_.projection_iterations += projection_.project(u_star_, w_star_, props_, dt_f, s_);
   // 5. optional Picard passes: eta from the provisional u^{n+1}, p^{n+1}, then steps 3-4 again
   for (int pass = 1; pass < params_.viscosity_passes; ++pass) {
-    update_viscosity(g_, s_, model_, props_);
+    effective_pressure(g_, params_, s_.p, p_eta_);
+    update_viscosity(g_, s_, p_eta_, model_, props_);
     Fields next = old_;
     stats_.viscous_iterations += viscous_.predict(old_, props_, adv_u_, adv_w_, dt_f, u_star_,
                                                   w_star_, force_u_, force_w_, &s_);

@@ -50,16 +50,31 @@ struct Hydrostatic {
 
 }  // namespace
 
+double ambient_pressure(const Grid& g, const SolverParams& params, double z) {
+  if (!params.rheology.effective_pressure) return 0.0;
+  return params.rheology.rho_light * params.rheology.material.g * std::cos(params.zeta) *
+         (g.Lz - z);
+}
+
+void effective_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
+                        std::vector<double>& p_eff) {
+  p_eff.resize(p.size());
+  parallel_for(g.nz, true, [&](int k) {
+    const double ambient = ambient_pressure(g, params, g.zc(k));
+    for (int i = 0; i < g.nx; ++i) p_eff[g.at(i, k)] = p[g.at(i, k)] - ambient;
+  });
+}
+
 void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
                         const std::vector<double>& h_before, const std::vector<double>& h_after,
                         std::vector<double>& p_eta) {
   const Hydrostatic hydrostatic(g, params);
   p_eta.resize(p.size());
   parallel_for(g.nz, true, [&](int k) {  // rows in parallel, each entry written once
-    const double z = g.zc(k);
+    const double z = g.zc(k), ambient = ambient_pressure(g, params, z);
     for (int i = 0; i < g.nx; ++i)
       p_eta[g.at(i, k)] =
-          p[g.at(i, k)] + (hydrostatic(h_after[i], z) - hydrostatic(h_before[i], z));
+          p[g.at(i, k)] + (hydrostatic(h_after[i], z) - hydrostatic(h_before[i], z)) - ambient;
 
   });
 }
@@ -78,12 +93,12 @@ void viscosity_pressure(const Grid& g, const SolverParams& params, const std::ve
   const double weight = extrapolate ? dt / (t - history.t_older) : 0.0;
   // d^n goes into 'older' (d^{n-2} is read first), then the two swap: old = d^n, older = d^{n-1}
   parallel_for(g.nz, true, [&](int k) {
-    const double z = g.zc(k);
+    const double z = g.zc(k), ambient = ambient_pressure(g, params, z);
     for (int i = 0; i < g.nx; ++i) {
       const int c = g.at(i, k);
       const double dynamic = p[c] - hydrostatic(h_before[i], z);
       const double slope_part = extrapolate ? weight * (dynamic - history.older[c]) : 0.0;
-      p_eta[c] = hydrostatic(h_after[i], z) + dynamic + slope_part;
+      p_eta[c] = hydrostatic(h_after[i], z) + dynamic + slope_part - ambient;
       history.older[c] = dynamic;
     }
   });

@@ -8,8 +8,18 @@
 
 namespace granbench::twod {
 
+// The light fluid's hydrostatic pressure rho_light g cos(zeta) (Lz - z), which the pore fluid
+// carries: subtracted from the mixture pressure for mu(I) when Rheology::effective_pressure is
+// set (0 otherwise).
+double ambient_pressure(const Grid& g, const SolverParams& params, double z);
+
+// p less the ambient pressure at each cell centre: the pressure of the grains' contacts, for
+// the viscosity at the present pressure (the solver's start and its further Picard passes).
+void effective_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
+                        std::vector<double>& p_eff);
+
 // p^n plus the change of the hydrostatic pressure between the column heights h^n and h^{n+1}
-// (the surface before and after this step's VOF advection).
+// (the surface before and after this step's VOF advection), less the ambient pressure.
 // Writes p_eta (resized to the cells).
 void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
                         const std::vector<double>& h_before, const std::vector<double>& h_after,
@@ -24,7 +34,7 @@ struct DynamicPressureHistory {
 };
 
 // As above, plus the dynamic part extrapolated to t + dt along its slope over two steps,
-//   p_eta = p_hs(h^{n+1}) + d^n + dt (d^n - d^{n-2}) / (t^n - t^{n-2}),
+//   p_eta = p_hs(h^{n+1}) + d^n + dt (d^n - d^{n-2}) / (t^n - t^{n-2}) - p_ambient,
 // which is second order and, unlike the slope over one step, does not amplify a pressure that
 // alternates from step to step. Shifts the history to level n.
 void viscosity_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,

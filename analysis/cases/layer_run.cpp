@@ -12,6 +12,7 @@
 #include "twod/properties.hpp"
 #include "twod/run.hpp"
 #include "twod/solver.hpp"
+#include "twod/viscosity_pressure.hpp"
 
 namespace granbench::cases {
 
@@ -20,12 +21,14 @@ namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
 // Downslope averages and the I field of the current state. I is evaluated from the current
-// velocity and pressure (the solver's own I is one step old).
+// velocity and the grains' effective pressure (the solver's own I is one step old).
 void take_sample(const twod::Solver& solver, LayerRunRecord& r) {
   const twod::Grid& g = solver.grid();
   const twod::Fields& s = solver.state();
   twod::Properties props = solver.properties();
-  twod::update_viscosity(g, s, solver.viscosity_model(), props);
+  std::vector<double> p_eff;
+  twod::effective_pressure(g, solver.params(), s.p, p_eff);
+  twod::update_viscosity(g, s, p_eff, solver.viscosity_model(), props);
   std::vector<double> u_mean(g.nz, 0.0), I_mean(g.nz, nan), field(g.cells(), nan);
   for (int k = 0; k < g.nz; ++k) {
     double sum_I = 0.0;

@@ -101,3 +101,38 @@ TEST(ViscosityPressure, TheHydrostaticPartFollowsTheMovedSurface) {
     EXPECT_NEAR(p_lagged[c], exact[c], 1e-9 * (1.0 + std::abs(exact[c])));
   }
 }
+
+// Rheology::effective_pressure: the light fluid's hydrostatic pressure, which the pores carry,
+// is not a load on the grains' contacts. Under a flat surface at rest the pressure for mu(I) is
+// then the grains' buoyant weight alone, (rho_g - rho_l) g cos(zeta) (h - z), as in the Bagnold
+// layer with the surface stress free, whatever the light fluid's density; without the option it
+// is the mixture's pressure, with the light column's weight on top.
+TEST(ViscosityPressure, TheEffectivePressureLeavesOutTheLightColumn) {
+  for (double rho_light : {0.015, 1.5}) {
+    TwoLayerColumn s;
+    s.params.rheology.rho_light = rho_light;
+    const double h = 0.0045, g_cos = s.params.rheology.material.g * std::cos(s.params.zeta);
+    const std::vector<double> heights(std::size_t(s.g.nx), h);
+    const std::vector<double> p = s.pressure(heights, 0.0, [](int, int, double) { return 0.0; });
+    std::vector<double> mixture, effective, lagged;
+    s.params.rheology.effective_pressure = false;
+    effective_pressure(s.g, s.params, p, mixture);
+    s.params.rheology.effective_pressure = true;
+    effective_pressure(s.g, s.params, p, effective);
+    viscosity_pressure(s.g, s.params, p, heights, heights, lagged);
+    for (int k = 0; k < s.g.nz; ++k)
+      for (int i = 0; i < s.g.nx; ++i) {
+        const std::size_t c = s.g.at(i, k);
+        const double z = s.g.zc(k);
+        EXPECT_DOUBLE_EQ(mixture[c], p[c]);
+        EXPECT_NEAR(lagged[c], effective[c], 1e-12 * (1.0 + std::abs(p[c])));
+        if (z < h) {  // the grains: their buoyant weight only
+          const double buoyant =
+              (s.params.rheology.material.bulk_density() - rho_light) * g_cos * (h - z);
+          EXPECT_NEAR(effective[c], buoyant, 1e-12 * p[c]) << "rho_l " << rho_light;
+        } else {  // the light fluid carries no contact pressure
+          EXPECT_NEAR(effective[c], 0.0, 1e-12 * (1.0 + p[c]));
+        }
+      }
+  }
+}

@@ -85,8 +85,8 @@ struct Rheology {
   // "Where it stands"). false (the default): the mixture's pressure, as in Gerris and the
   // paper. Not the default yet because without the overburden thrown grains and films carry
   // p <= 0 and the floor eta_min: the paper's sine start at 4 and 8 cells per h0 then differs
-  // more between the grid at rest and the moving grid (tests/twod/test_frame.cpp), and the long
-  // nonlinear runs were not re-checked with it.
+  // more between the grid at rest and the moving grid (tests/twod/test_frame.cpp); the long
+  // nonlinear runs complete with it, but their developed waves were not measured.
   bool effective_pressure = false;
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
   InterfacePressure interface_pressure = InterfacePressure::Extrapolated;

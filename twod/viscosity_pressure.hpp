@@ -14,7 +14,8 @@ namespace granbench::twod {
 double ambient_pressure(const Grid& g, const SolverParams& params, double z);
 
 // p less the ambient pressure at each cell centre: the pressure of the grains' contacts, for
-// the viscosity at the present pressure (the solver's start and its further Picard passes).
+// the viscosity at the present pressure (the solver's start, its further Picard passes and the
+// step without the hydrostatic part, SolverParams::hydrostatic_viscosity_pressure = false).
 void effective_pressure(const Grid& g, const SolverParams& params, const std::vector<double>& p,
                         std::vector<double>& p_eff);
 

@@ -20,7 +20,7 @@
 //     step's change; projection) cfl=0.4 dt_max=1e-3 passes=1 ab2=1 tangent=1 hydro_p=1 row_p=1
 //     extrap_p=1 (eta's dynamic pressure extrapolated) mid_vof=1 (mid-step interface velocity)
 //     row_shear=1 row_tau=1 (surface_row_shear) interface_p=cell|extrapolated
-//     ambient=1 (ambient_pressure_gradient) effective_p=0 (Rheology::effective_pressure)
+//     ambient=1 (ambient_pressure_gradient) effective_p=1 (Rheology::effective_pressure)
 //     (defaults: the solver's, twod/parameters.hpp)
 //     series=<file>   (t, |h_m|, arg h_m, mean flux per sample)   profile=1 (column means at end)
 //     drag=<Pa s/m>   theory with a surface drag tau_xz(h) = mu h - beta u(h)

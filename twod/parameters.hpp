@@ -75,19 +75,16 @@ struct Rheology {
   // the surface at the lid whose shear (28 1/s) made the growth depend on the seed's amplitude
   // with the surface on a cell face (docs/twod-validation.md §4, "Wisps at a face").
   bool ambient_pressure_gradient = true;
-  // true: the pressure in mu(I) (2.8, 2.11) is the grains' effective pressure, the mixture's
-  // pressure less the light fluid's hydrostatic pressure rho_light g cos(zeta) (Lz - z), which
-  // the fluid in the pores carries (Terzaghi's effective stress). The held light layer
-  // (ambient_pressure_gradient) puts its weight on the grains' surface as a normal load with no
-  // shear traction; in mu(I) that overburden lowers mu within the surface row, and a ten times
-  // heavier light fluid moved the growth by +1 % at 64 cells per h0, with a second wave that
-  // neither linear theory has. With the effective pressure both go (docs/twod-validation.md,
-  // "Where it stands"). false (the default): the mixture's pressure, as in Gerris and the
-  // paper. Not the default yet because without the overburden thrown grains and films carry
-  // p <= 0 and the floor eta_min: the paper's sine start at 4 and 8 cells per h0 then differs
-  // more between the grid at rest and the moving grid (tests/twod/test_frame.cpp); the long
-  // nonlinear runs complete with it, but their developed waves were not measured.
-  bool effective_pressure = false;
+  // true (the default since 5 December, twenty-seventh session): the pressure in mu(I) (2.8,
+  // 2.11) is the grains' effective pressure, the mixture's pressure less the light fluid's
+  // hydrostatic pressure rho_light g cos(zeta) (Lz - z), which the fluid in the pores carries
+  // (Terzaghi's effective stress). The held light layer (ambient_pressure_gradient) puts its
+  // weight on the grains' surface as a normal load with no shear traction; in mu(I) that
+  // overburden lowers mu within the surface row, and a ten times heavier light fluid moved the
+  // growth by +1 % at 64 cells per h0, with a second wave that neither linear theory has. With
+  // the effective pressure both go, and the grains see the paper's stress-free surface
+  // (docs/twod-validation.md, "Where it stands"). false: the mixture's pressure, as in Gerris.
+  bool effective_pressure = true;
   ViscosityMixing mixing = ViscosityMixing::Arithmetic;
   InterfacePressure interface_pressure = InterfacePressure::Extrapolated;
   // Newtonian granular phase instead of mu(I) (used by the Nusselt-film validation): eta_g =

@@ -28,7 +28,10 @@ std::vector<std::pair<std::string, double>> checkpoint_physics(const SolverParam
                      {"D-min", r.D_min},
                      {"rho-light", r.rho_light},
                      {"eta-light", r.eta_light},
-                     {"mixing", double(static_cast<int>(r.mixing))}});
+                     {"mixing", double(static_cast<int>(r.mixing))},
+                     // no option: a solver default that changed (5 December); a checkpoint from
+                     // before it continued with the other pressure in mu(I) would mix two models
+                     {"effective-pressure", r.effective_pressure ? 1.0 : 0.0}});
   return v;
 }
 
@@ -58,7 +61,7 @@ std::string restart_mismatch(const Checkpoint& c, const Grid& g, const SolverPar
         found = true;
         if (differs(value, run_value)) return text(name, value, run_value);
       }
-    if (!found) return name + ": not recorded in the checkpoint";
+    if (!found) return name + ": not recorded in the checkpoint (written by an older granbench)";
   }
   // After the physics: a depth that differs also changes the default Lz, and --h0 is the
   // better name for that.

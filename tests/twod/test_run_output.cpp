@@ -122,4 +122,12 @@ TEST(TwodRunOutput, ARestartWithOtherPhysicsNamesTheParameter) {
   p.rheology.h0_for_curve = 0.005;
   EXPECT_EQ(restart_mismatch(cp, Grid(32, 8, 0.04, 0.01), p).rfind("h0:", 0), 0u);
   EXPECT_EQ(restart_mismatch(cp, Grid(40, 8, 0.04, 0.008), c.params).rfind("nx:", 0), 0u);
+  p = c.params;
+  p.rheology.effective_pressure = !p.rheology.effective_pressure;
+  EXPECT_EQ(restart_mismatch(cp, c.grid, p).rfind("effective-pressure:", 0), 0u);
+  // a checkpoint written before the effective pressure was recorded (its physics without it)
+  Checkpoint older = cp;
+  std::erase_if(older.physics, [](const auto& e) { return e.first == "effective-pressure"; });
+  EXPECT_EQ(restart_mismatch(older, c.grid, c.params),
+            "effective-pressure: not recorded in the checkpoint (written by an older granbench)");
 }

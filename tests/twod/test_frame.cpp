@@ -111,8 +111,8 @@ TEST(CoMovingFrame, TheSteadyLayerIsTheLabFramesOnAMovingGrid) {
 // at 16 cells per h0 1.2-4.0 % over cfl 0.2-0.42 (ten runs, with the mixture's pressure in
 // mu(I) and with the effective one); at 8 cells per h0 2.6-2.9 % over cfl 0.3-0.42 and 5.2 % at
 // 0.2, but 15.6 % at cfl 0.4 with the effective pressure, one such event (with the mixture's
-// pressure 2.7 %; both frames' lab runs agree to 1e-7 m); at 4 cells per h0 7.8 %. So the test
-// judges 16 cells per h0 at two step sizes against 4.
+// pressure 2.7 %; the two pressures' runs on the grid at rest agree to 1e-7 m); at 4 cells per
+// h0 7.8 %. So the test judges 16 cells per h0 at two step sizes against 4.
 TEST(CoMovingFrame, ARunOnAMovingGridGivesTheLabFramesSeries) {
   auto frame_difference = [](int refine, double cfl) {
     granbench::testing::SmallTwodRollwave c;
@@ -130,6 +130,7 @@ TEST(CoMovingFrame, ARunOnAMovingGridGivesTheLabFramesSeries) {
     const RunResult moving = run(moving_solver, c.empty_series(), schedule);
     EXPECT_TRUE(lab.completed() && moving.completed());
     EXPECT_EQ(lab.series.nt(), moving.series.nt());
+    if (lab.series.nt() == 0 || lab.series.nt() != moving.series.nt()) return 1.0;  // (failed)
     EXPECT_LT(moving_solver.statistics().steps, 0.7 * lab_solver.statistics().steps);
     const std::size_t last = lab.series.nt() - 1;
     const auto lab_span = lab.series.h_at(last), moving_span = moving.series.h_at(last);

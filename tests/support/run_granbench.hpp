@@ -3,6 +3,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -17,11 +18,16 @@ struct CommandResult {
 };
 
 // `args` is appended to the path of the granbench binary, which follows `launcher` (e.g.
-// "mpirun -np 2 ", empty: none); stderr goes to a file named after `tag` in the temporary
-// directory.
+// "mpirun -np 2 ", empty: none); stderr goes to a file in the temporary directory named after
+// `tag`, this process and the call, and is removed after reading. (Named after `tag` alone, the
+// file was shared by the tests of one suite, which ctest -j runs as concurrent processes: one
+// test once read the other's stderr.)
 inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli",
                                    const std::string& launcher = "") {
-  const auto errfile = std::filesystem::temp_directory_path() / ("granbench_" + tag + "_err.txt");
+  static int calls = 0;  // tests call this from their main thread only
+  const auto errfile = std::filesystem::temp_directory_path() /
+                       ("granbench_" + tag + "_" + std::to_string(getpid()) + "_" +
+                        std::to_string(++calls) + "_err.txt");
   const std::string cmd = launcher + std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args +
                           " 2>" + errfile.string();
   CommandResult r;
@@ -33,6 +39,8 @@ inline CommandResult run_granbench(const std::string& args, const std::string& t
   FILE* e = fopen(errfile.c_str(), "r");
   while (e && fgets(buf.data(), buf.size(), e)) r.err += buf.data();
   if (e) fclose(e);
+  std::error_code ignored;
+  std::filesystem::remove(errfile, ignored);
   return r;
 }
 

@@ -111,11 +111,6 @@ void update_densities(const Grid& g, const std::vector<double>& f, const Rheolog
   });
 }
 
-void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
-                      Properties& props) {
-  update_viscosity(g, s, s.p, model, props);
-}
-
 void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>& p_eta,
                       const ViscosityModel& model, Properties& props) {
   const int nx = g.nx, nz = g.nz;

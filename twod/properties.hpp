@@ -41,11 +41,10 @@ class ViscosityModel {
 // rho at the u- and w-faces from f (arithmetic average of the adjacent cells).
 void update_densities(const Grid& g, const std::vector<double>& f, const Rheology& r,
                       Properties& props);
-// eta at cell centres and corners (and I at centres) from u, w, f and the pressure p_eta (s.p in
-// the first form), with the tangent viscosities of the viscous step (properties.cpp).
+// eta at cell centres and corners (and I at centres) from u, w, f and the pressure p_eta that
+// mu(I) sees (the solver's: viscosity_pressure.hpp, the grains' effective pressure by default),
+// with the tangent viscosities of the viscous step (properties.cpp).
 void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>& p_eta,
                       const ViscosityModel& model, Properties& props);
-void update_viscosity(const Grid& g, const Fields& s, const ViscosityModel& model,
-                      Properties& props);
 
 }  // namespace granbench::twod

@@ -67,8 +67,8 @@ TEST(Properties, SurfaceRowShearSpacingScalesTheCornerBelowAPartlyFilledRow) {
     r.surface_row_shear_spacing = true;
     const ViscosityModel spaced(r);
     Properties a(g), b(g);
-    update_viscosity(g, s, plain, a);
-    update_viscosity(g, s, spaced, b);
+    update_viscosity(g, s, s.p, plain, a);
+    update_viscosity(g, s, s.p, spaced, b);
     for (int i = 0; i < g.nx; ++i) {
       EXPECT_NEAR(b.eta_n[g.at(i, 3)], 2.0 / (1.0 + fill) * a.eta_n[g.at(i, 3)], 1e-14) << fill;
       EXPECT_NEAR(b.eta_n_tangent[g.at(i, 3)], 2.0 / (1.0 + fill) * a.eta_n_tangent[g.at(i, 3)],
@@ -98,7 +98,7 @@ TEST(Properties, TheSurfaceRowsStrainRateIsItsGrainsShear) {
     r.surface_row_shear_spacing = true;
     const ViscosityModel model(r);
     Properties props(g);
-    update_viscosity(g, s, model, props);
+    update_viscosity(g, s, s.p, model, props);
     // the stencil's gamma at the surface row's lower corners is grains_shear (u over dz)
     const double D_surface = 0.5 * grains_shear * 2.0 / (1.0 + fill);
     const double D_below = 0.5 * grains_shear;  // row 2: four granular corners

@@ -52,8 +52,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   if (long(twod.nx) * twod.nz > kMaxTwodCells)
     throw UsageError("--nx: " + std::to_string(twod.nx) + " x " + std::to_string(twod.nz) +
                      " 2D cells; valid range nx * nz <= " + std::to_string(kMaxTwodCells));
-  const std::vector<std::string> warnings =
-      twod_warnings(chute.steady(), twod.domain_height(chute.h0) / twod.nz, chute.Lx);
+  const double dz = twod.domain_height(chute.h0) / twod.nz;
+  std::vector<std::string> warnings = twod_warnings(chute.steady(), dz, chute.Lx);
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
@@ -97,6 +97,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
                      std::to_string(2.0 * std::numbers::pi * chute.h0 / chute.Lx) + " (" +
                      e.what() + "); choose another --Lx or --h0");
   }
+  if (auto w = twod_growth_accuracy_warning(c.base, dz, chute.Lx, c.theory.exact_2d.growth_rate))
+    warnings.push_back(*w);
   print_warnings(warnings);  // once every check has passed
   // Both models at once (run_both shares the cores).
   std::tie(c.depthavg, c.twod) = run_both(chute, depthavg, twod, ctl);

@@ -33,6 +33,7 @@ void add_sweep_command(CLI::App& app) {
   add_threads_option(*sub);
   sub->callback([o, sub] {
     SweepPlan plan = plan_sweep(*o, *sub);
+    add_growth_accuracy_warnings(*o, plan);
     run_sweep_command(std::move(plan.spec), o->output, plan.settings, plan.title, plan.warnings);
   });
 }

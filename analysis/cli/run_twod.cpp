@@ -61,7 +61,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   Grid grid(int(o.nx), mo.settings.nz, o.Lx, Lz);
   grid.frame_speed = mo.settings.frame_fraction * base.u_surface;  // (twod/frame.hpp)
   const double wavelength = o.Lx / o.mode;
-  const std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
+  std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so
   // a restart with the same options continues the first run's grids.
@@ -103,6 +103,9 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
     if (o.init == "eigenmode") throw;
   }
   const double seeded_speed = eigenmode ? eigenmode->phase_speed() : NAN;
+  if (eigenmode)
+    if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate()))
+      warnings.push_back(*w);
   Solver solver(grid, params,
                 restart ? restart->state
                         : make_initial_state(grid,

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "analysis/cli/physics_warnings.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
 
 namespace granbench::cli {
 
@@ -167,6 +168,30 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
   }
   plan.title = title.str();
   return plan;
+}
+
+void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
+  const SweepSpec& spec = plan.spec;
+  if (!spec.twod) return;
+  const SteadyState base = o.flow.steady();
+  const MuCurve curve = o.flow.make_curve();
+  for (const double Lx : spec.Lx) {
+    TwodSettings point = spec.twod_settings;  // the grid its point runs on (sweep.cpp)
+    point.nz = point.cells_across(Lx, o.flow.h0);
+    double growth = 0.0;
+    try {
+      growth = linear2d::surface_eigenmode(base, curve, Lx).growth_rate();
+    } catch (const std::exception&) {
+      continue;  // no surface mode: the point reports that itself
+    }
+    const double dz = point.domain_height(o.flow.h0) / point.nz;
+    if (auto w = twod_growth_accuracy_warning(base, dz, Lx, growth)) {
+      std::ostringstream named;
+      named << "Lx = " << Lx << " m: " << *w;
+      plan.warnings.push_back(named.str());
+    }
+  }
+  plan.settings["warnings"] = plan.warnings;
 }
 
 }  // namespace granbench::cli

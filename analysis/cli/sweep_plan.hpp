@@ -41,13 +41,20 @@ struct SweepPlan {
   SweepSpec spec;
   nlohmann::json settings;  // the command's own keys for the JSON
   std::string title;        // the table's first line
-  // The 2D points' physics warnings (physics_warnings.hpp; the grid's, and the shortest wave's),
-  // printed once the sweep's checks have passed and listed under "warnings" in the JSON.
+  // The 2D points' physics warnings (physics_warnings.hpp; the grid's, the shortest wave's, and
+  // with add_growth_accuracy_warnings those of small growth rates), printed once the sweep's checks
+  // have passed and listed under "warnings" in the JSON.
   std::vector<std::string> warnings;
 };
 // After parsing `app` (for which options were given). UsageError for an option that does not
 // apply to the chosen --model, or for a bad value.
 SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app);
+
+// Adds to the plan's warnings (and its JSON settings) every 2D point whose exact 2D growth rate is
+// small against the deficit its grid is expected to carry (twod_growth_accuracy_warning), named by
+// its length. Apart from plan_sweep because it solves the surface eigenmode at each length (some
+// 25 ms each).
+void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan);
 
 // The options that change no stored result, each with the reason: how the work is shared, where
 // it goes, how it is shown, and the two that choose the points (each point is stored with its

@@ -1,8 +1,12 @@
 // The physics warnings of a 2D run (physics_warnings.hpp): an ill-posed base state, a grid
 // coarser than 32 cells per h0 and a wave shorter than 7.5 h0 on fewer cells per h0 than compare
-// and sweep give it (32 refined as 7.5 h0 / wavelength) are named; a well-posed base state's 8 cm
-// wave on the trusted grid gets none.
+// and sweep give it (32 refined as 7.5 h0 / wavelength) are named, and so is a growth rate small
+// against the grid's expected deficit; a well-posed base state's 8 cm wave on the trusted grid
+// gets none.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
 
 #include "analysis/cli/physics_warnings.hpp"
 #include "common/mu_curves.hpp"
@@ -48,4 +52,30 @@ TEST(PhysicsWarnings, AShortWaveIsNamedBelowItsRefinedGrid) {
   // 3 cm = 7.5 h0 (within 5 % at 32 cells per h0) and 2 cm on compare's 96 cells: not named
   EXPECT_TRUE(cli::twod_warnings(good, 2.03 * 4e-3 / 64.0, 0.03).empty());
   EXPECT_TRUE(cli::twod_warnings(good, 4e-3 / 47.5, 0.02).empty());
+}
+
+// A growth rate small against the deficit the grid is expected to carry (the law measured in
+// docs/twod-validation.md §3, 0.17 sqrt(g/h0) (k dz)^1.4) is named, with the cells per h0 at which
+// the law gives 5 %: the 1.5 cm wave on the default grid's 63.5 cells per h0 (measured 19.8 %
+// under), not the 2 cm wave on its 47.5 (6.4 %) nor the 8 cm wave on the coarse preset (3.8 %).
+// Growth rates from `granbench dispersion --theory twod`.
+TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
+  const SteadyState good = section7(CurveKind::Regularised, 28.5);
+  const double h0 = 4e-3;
+  // the law's order: halving dz divides the deficit by 2^1.4
+  EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / 32.0, 0.02) /
+                  cli::expected_twod_growth_deficit(good, h0 / 64.0, 0.02),
+              std::pow(2.0, 1.4), 1e-12);
+  const auto near_cutoff = cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.015, 0.26657);
+  ASSERT_TRUE(near_cutoff.has_value());
+  EXPECT_NE(near_cutoff->find("0.267 1/s"), std::string::npos) << *near_cutoff;
+  EXPECT_NE(near_cutoff->find("(19 %)"), std::string::npos) << *near_cutoff;
+  // the cells it names give 5 % by the same law
+  const double aimed = std::stod(near_cutoff->substr(near_cutoff->rfind("about ") + 6));
+  // (printed as a whole number: 0.5 in 168 moves the law by 0.4 %, 2e-4 of the 5 %)
+  EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / aimed, 0.015) / 0.26657, 0.05, 2.5e-4);
+  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 47.5, 0.02, 0.82001).has_value());
+  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 15.5, 0.08, 1.0891).has_value());
+  // no growth, nothing to measure
+  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.013, -0.2).has_value());
 }

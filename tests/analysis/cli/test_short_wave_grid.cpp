@@ -1,11 +1,13 @@
 // The default 2D grids give a wave shorter than 7.5 h0 more cells across the layer
 // (TwodSettings::cells_across): `run --model twod` without --nz, and `compare`, put 96 cells
 // (48 per h0) across the 2 cm wave of the section 7 case and 64 across the 8 cm one; an explicit
-// --nz is kept. End to end: the grid is read back from each command's HDF5 output.
+// --nz is kept. End to end: the grid is read back from each command's HDF5 output. Nearer the
+// cutoff, where that grid is not enough, `run` warns.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/hdf5_file.hpp"
@@ -40,6 +42,21 @@ TEST_F(ShortWaveGrid, RunRefinesAcrossTheLayerUnlessNzIsGiven) {
   EXPECT_EQ(recorded_nz(run + "--Lx 0.08 --mode 4", "nz"), 96.0);  // the wave, not the domain
   EXPECT_EQ(recorded_nz(run + "--Lx 0.08", "nz"), 64.0);
   EXPECT_EQ(recorded_nz(run + "--Lx 0.02 --nz 40", "nz"), 40.0);
+}
+
+// Near the cutoff the refined grid is not enough: `run` says so, in its JSON and on stderr, for
+// the 1.5 cm wave (its growth 0.267 1/s, the expected deficit 19 %), and not for the 2 cm one.
+TEST_F(ShortWaveGrid, RunWarnsOfASmallGrowthNearTheCutoff) {
+  const std::string run = "run --model twod --nx 16 --t-end 1e-4 --checkpoint-every 0 --json ";
+  const auto near = run_granbench(run + "--Lx 0.015", "short_wave");
+  ASSERT_EQ(near.code, 0) << near.err;
+  const auto warnings = nlohmann::json::parse(near.out)["warnings"];
+  ASSERT_EQ(warnings.size(), 1u) << warnings;
+  EXPECT_EQ(warnings[0].get<std::string>().find("a small growth rate"), 0u) << warnings;
+  EXPECT_NE(near.err.find("warning: a small growth rate"), std::string::npos) << near.err;
+  const auto two_cm = run_granbench(run + "--Lx 0.02", "short_wave");
+  ASSERT_EQ(two_cm.code, 0) << two_cm.err;
+  EXPECT_TRUE(nlohmann::json::parse(two_cm.out)["warnings"].empty()) << two_cm.out;
 }
 
 TEST_F(ShortWaveGrid, CompareRefinesAcrossTheLayerUnlessNzIsGiven) {

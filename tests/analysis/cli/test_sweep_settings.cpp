@@ -159,8 +159,9 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
 
 // The 2D points' physics warnings (physics_warnings.hpp) come with the plan. A sweep that reaches
 // a wave of 5 h0 runs it on more cells across the layer (TwodSettings::cells_across) and is not
-// warned of it on the default preset; on the coarse preset it is (and of the coarse grid). A
-// depth-averaged sweep gets none.
+// warned of it on the default preset; on the coarse preset it is (and of the coarse grid, and of
+// the deficit expected there). A point whose exact 2D growth is small against its grid's expected
+// deficit is named with its length. A depth-averaged sweep gets none.
 TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
   auto warnings = [](const std::string& model, const std::string& Lx,
                      const std::string& resolution) {
@@ -171,13 +172,21 @@ TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
     if (!resolution.empty()) args.insert(args.end(), {"--resolution", resolution});
     std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
     app.parse(args);
-    return plan_sweep(o, app).warnings;
+    SweepPlan plan = plan_sweep(o, app);
+    add_growth_accuracy_warnings(o, plan);
+    return plan.warnings;
   };
   EXPECT_TRUE(warnings("twod", "0.02:0.08:4", "").empty());
   EXPECT_TRUE(warnings("both", "0.04:0.08:3", "default").empty());
   const auto coarse = warnings("twod", "0.02:0.08:4", "coarse");
-  ASSERT_EQ(coarse.size(), 2u);
+  ASSERT_EQ(coarse.size(), 3u);
   EXPECT_NE(coarse[1].find("short wave (5 h0)"), std::string::npos) << coarse[1];
+  // and on its 23.5 cells per h0 the 2 cm wave's growth is expected 17 % under the theory
+  EXPECT_EQ(coarse[2].find("Lx = 0.02 m: a small growth rate"), 0u) << coarse[2];
+  // Near the cutoff (1.38 cm) the default preset's grid is named at 1.5 cm, not at 2 cm.
+  const auto near_cutoff = warnings("twod", "0.015:0.02:2", "");
+  ASSERT_EQ(near_cutoff.size(), 1u);
+  EXPECT_EQ(near_cutoff[0].find("Lx = 0.015 m: a small growth rate"), 0u) << near_cutoff[0];
   EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4", "").empty());
 }
 

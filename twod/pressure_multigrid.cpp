@@ -12,7 +12,9 @@
 //   coarse op.   face coefficients averaged over the two fine faces that make up a coarse
 //                face (the rediscretisation for constant beta; keeps the jump in place).
 //   coarsest     dense LDLT once the grid cannot be halved (or is tiny); 20 symmetric line
-//                sweeps instead when an odd size stops the coarsening above 2048 cells.
+//                sweeps instead when an odd size stops the coarsening above 2048 cells
+//                (kDirectCoarsestCells): several times the cost of a step, which is why compare
+//                and sweep keep their cell counts multiples of 16.
 // Threads (parallel.hpp): the columns of one colour are independent, so each colour's columns are
 // solved in parallel; the operator, factors and grid transfers are parallel over columns. Every
 // value is computed by the same arithmetic for any thread count. Levels below kParallelCells
@@ -63,6 +65,18 @@ void PoissonLevel::factorise() {
   });
 }
 
+bool can_halve(int nx, int nz) {
+  return nx % 2 == 0 && nz % 2 == 0 && nz >= 4 && nx >= 4 && nx * nz > 64;
+}
+
+std::pair<int, int> coarsest_level(int nx, int nz) {
+  while (can_halve(nx, nz)) {
+    nx /= 2;
+    nz /= 2;
+  }
+  return {nx, nz};
+}
+
 void PressureMultigrid::set_operator(const PoissonLevel& fine) {
   PoissonLevel& F = fine_operator(fine.nx, fine.nz);
   F.cx = fine.cx;
@@ -80,7 +94,7 @@ PoissonLevel& PressureMultigrid::fine_operator(int nx, int nz) {
     levels_.assign(1, fine);
     while (true) {
       const PoissonLevel& L = levels_.back();
-      if (L.nx % 2 || L.nz % 2 || L.nz < 4 || L.nx < 4 || L.nx * L.nz <= 64) break;
+      if (!can_halve(L.nx, L.nz)) break;
       PoissonLevel C;
       C.nx = L.nx / 2;
       C.nz = L.nz / 2;
@@ -108,7 +122,7 @@ void PressureMultigrid::rebuild() {
   for (PoissonLevel& L : levels_) L.factorise();  // (parallel inside)
   const PoissonLevel& B = levels_.back();
   const int n = B.nx * B.nz;
-  direct_coarsest_ = n <= 2048;
+  direct_coarsest_ = n <= kDirectCoarsestCells;
   if (!direct_coarsest_) return;  // grids that cannot be halved far: iterate on the coarsest
   Eigen::MatrixXd dense(n, n);
   Eigen::VectorXd e = Eigen::VectorXd::Zero(n), col;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <utility>
 #include <vector>
 
 namespace granbench::twod {
@@ -20,6 +21,13 @@ struct PoissonLevel {
   void factorise();
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 };
+
+// The levels: a grid is halved while both counts are even, nz >= 4, nx >= 4 and it has more than
+// 64 cells. The coarsest is solved directly up to kDirectCoarsestCells cells and smoothed by line
+// sweeps above (an odd count on a large grid), at several times the cost of a step.
+inline constexpr int kDirectCoarsestCells = 2048;
+bool can_halve(int nx, int nz);
+std::pair<int, int> coarsest_level(int nx, int nz);  // (nx, nz) of the coarsest level
 
 class PressureMultigrid {
  public:

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "analysis/comparison/twod_settings.hpp"
+#include "twod/pressure_multigrid.hpp"
 
 namespace granbench::cli {
 
@@ -68,6 +69,19 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
                 "about %.0f cells per h0 would bring that to 5 %%",
                 exact_growth, base.h0 / dz, deficit, 100.0 * deficit / exact_growth,
                 wavelength / base.h0, base.h0 / dz_aimed);
+  return std::string(buf);
+}
+
+std::optional<std::string> twod_grid_cost_warning(int nx, int nz) {
+  const auto [cx, cz] = twod::coarsest_level(nx, nz);
+  if (cx * cz <= twod::kDirectCoarsestCells) return std::nullopt;
+  auto multiple_of_16 = [](int n) { return 16 * ((n + 15) / 16); };
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "the pressure multigrid cannot coarsen %d x %d cells below %d x %d (an odd count), "
+                "so it smooths that grid instead of solving it: each step costs several times "
+                "more (four times at 195 x 64, docs/performance.md); %d x %d cells would avoid it",
+                nx, nz, cx, cz, multiple_of_16(nx), multiple_of_16(nz));
   return std::string(buf);
 }
 

@@ -11,6 +11,7 @@
 //    (docs/twod-validation.md §3);
 //  - the exact 2D growth rate is small against the error the grid is expected to carry (near a
 //    cutoff, where the growth falls to zero): twod_growth_accuracy_warning.
+// And one about cost, twod_grid_cost_warning: a grid the pressure multigrid cannot coarsen.
 #pragma once
 
 #include <optional>
@@ -40,6 +41,11 @@ double expected_twod_growth_deficit(const SteadyState& base, double dz, double w
 // that would bring it to 5 %; nothing otherwise.
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
                                                         double wavelength, double exact_growth);
+
+// When the pressure multigrid cannot coarsen an nx x nz grid to one it solves directly (an odd
+// count, twod/pressure_multigrid.hpp), a warning that each step will cost several times more and
+// the counts, rounded up to multiples of 16, that avoid it; nothing otherwise.
+std::optional<std::string> twod_grid_cost_warning(int nx, int nz);
 
 void print_warnings(const std::vector<std::string>& warnings);
 

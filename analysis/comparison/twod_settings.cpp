@@ -49,10 +49,11 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           {"consistent_momentum", s.consistent_momentum ? 1.0 : 0.0},
           {"chebyshev_N", double(s.chebyshev_N)},
           {"frame_fraction", s.frame_fraction},
-          // How nx becomes the cells along another length (cells_along): 2, at least nx cells and
-          // at most their dx at 8 cm (since 3 December); a sweep file without it kept the dx
-          // alone, and its points are not resumed on the new grids.
-          {"nx_rule", 2.0},
+          // How nx becomes the cells along another length (cells_along): 3, at least nx cells and
+          // at most their dx at 8 cm, rounded up to a multiple of 16 (since 5 December); 2 did
+          // not round (since 3 December), and a sweep file without it kept the dx alone. Points
+          // stored under another rule are not resumed on the new grids.
+          {"nx_rule", 3.0},
           // How nz becomes the cells across the layer for a shorter wave (cells_across): 1, the
           // preset's nz refined for waves under 7.5 h0 (since 5 December); a sweep file without
           // it kept nz at every length, and its short points are not resumed on the new grids.

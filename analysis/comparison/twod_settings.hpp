@@ -43,10 +43,14 @@ struct TwodSettings {
   // another length, compare and sweep keep at least nx cells along the domain, which holds one
   // wavelength of the seeded wave, and at most that dx: a short wave keeps the preset's cells per
   // wavelength (the 2 cm wave had 40 cells with dx alone and grew 34 % below the 2D theory, 16 %
-  // with 160: docs/twod-validation.md §2), and a long domain the preset's dx.
+  // with 160: docs/twod-validation.md §2), and a long domain the preset's dx. The count is
+  // rounded up to a multiple of 16, as nz is: the pressure multigrid halves the grid while both
+  // counts are even, and a column count it cannot halve (195 at 9.7 cm) left it smoothing on the
+  // fine grid, four times slower a step (docs/performance.md, twenty-eighth session).
   static constexpr double reference_length = 0.08;
   int cells_along(double Lx) const {
-    return std::max(nx, static_cast<int>(std::lround(nx * Lx / reference_length)));
+    const int cells = std::max(nx, static_cast<int>(std::lround(nx * Lx / reference_length)));
+    return 16 * ((cells + 15) / 16);
   }
   // Across the layer, compare and sweep keep the preset's nz for waves of
   // longest_wave_to_refine h0 and longer, and refine a shorter wave's grid in proportion to

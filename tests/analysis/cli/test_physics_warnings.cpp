@@ -79,3 +79,18 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
   // no growth, nothing to measure
   EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.013, -0.2).has_value());
 }
+
+// A grid the pressure multigrid cannot coarsen to a directly solved one is named with the counts
+// that avoid it: 195 x 64 stops at once (195 is odd; 12 480 cells are smoothed, not solved), while
+// 208 x 64 halves four times and small odd grids are solved directly.
+TEST(PhysicsWarnings, AGridTheMultigridCannotCoarsenIsNamed) {
+  const auto odd = cli::twod_grid_cost_warning(195, 64);
+  ASSERT_TRUE(odd.has_value());
+  EXPECT_NE(odd->find("below 195 x 64"), std::string::npos) << *odd;
+  EXPECT_NE(odd->find("208 x 64 cells would avoid it"), std::string::npos) << *odd;
+  // 262 x 64 halves once, to 131 x 32 = 4 192 cells, still above the direct solve's 2 048
+  EXPECT_TRUE(cli::twod_grid_cost_warning(262, 64).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(208, 64).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(160, 64).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(15, 16).has_value());  // 240 cells, solved directly
+}

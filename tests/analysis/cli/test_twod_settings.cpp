@@ -25,13 +25,16 @@ std::vector<std::string> words(const std::string& text) {
 TEST(TwodSettings, OtherLengthsKeepThePresetsCellsAndAtMostItsDx) {
   // compare and sweep take the cells along x from here: a short domain keeps the preset's cells
   // (one wavelength of the seeded wave; the 2 cm wave had 40 cells with the dx rule alone), a
-  // long one the preset's dx (0.5 mm at 160 cells over 8 cm).
+  // long one the preset's dx (0.5 mm at 160 cells over 8 cm), in multiples of 16.
   TwodSettings s;
   s.nx = 160;
   EXPECT_EQ(s.cells_along(0.02), 160);
   EXPECT_EQ(s.cells_along(0.08), 160);
   EXPECT_EQ(s.cells_along(0.12), 240);
   EXPECT_EQ(s.cells_along(0.24), 480);
+  // rounded up to a multiple of 16, which the pressure multigrid can halve four times
+  EXPECT_EQ(s.cells_along(0.09727272727272727), 208);  // 195 rounded up: dx 0.468 mm
+  EXPECT_EQ(s.cells_along(0.1), 208);
   s.nx = 80;
   EXPECT_EQ(s.cells_along(0.01), 80);
   EXPECT_EQ(s.cells_along(0.16), 160);

@@ -46,7 +46,7 @@ struct TwodSettings {
   // with 160: docs/twod-validation.md §2), and a long domain the preset's dx. The count is
   // rounded up to a multiple of 16, as nz is: the pressure multigrid halves the grid while both
   // counts are even, and a column count it cannot halve (195 at 9.7 cm) left it smoothing on the
-  // fine grid, four times slower a step (docs/performance.md, twenty-eighth session).
+  // fine grid, 3.5 times slower a step (docs/performance.md, twenty-eighth session).
   static constexpr double reference_length = 0.08;
   int cells_along(double Lx) const {
     const int cells = std::max(nx, static_cast<int>(std::lround(nx * Lx / reference_length)));

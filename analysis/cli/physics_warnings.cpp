@@ -75,14 +75,13 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
 std::optional<std::string> twod_grid_cost_warning(int nx, int nz) {
   const auto [cx, cz] = twod::coarsest_level(nx, nz);
   if (cx * cz <= twod::kDirectCoarsestCells) return std::nullopt;
-  auto multiple_of_16 = [](int n) { return 16 * ((n + 15) / 16); };
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "the pressure multigrid cannot coarsen %d x %d cells below %d x %d (a count it "
                 "cannot halve), so it smooths that grid instead of solving it: each step costs "
                 "several times more (3.5 to 4.8 times with 195 to 665 columns, "
                 "docs/performance.md); %d x %d cells would avoid it",
-                nx, nz, cx, cz, multiple_of_16(nx), multiple_of_16(nz));
+                nx, nz, cx, cz, TwodSettings::multiple_of_16(nx), TwodSettings::multiple_of_16(nz));
   return std::string(buf);
 }
 

@@ -155,8 +155,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});
     const double shortest = *std::min_element(spec.Lx.begin(), spec.Lx.end());
-    TwodSettings at_shortest = spec.twod_settings;  // the grid its point runs on (sweep.cpp)
-    at_shortest.nz = at_shortest.cells_across(shortest, o.flow.h0);
+    const TwodSettings at_shortest = point_twod_settings(spec, shortest);
     plan.warnings = twod_warnings(o.flow.steady(),
                                   at_shortest.domain_height(o.flow.h0) / at_shortest.nz, shortest);
     settings["warnings"] = plan.warnings;
@@ -176,8 +175,7 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
   const SteadyState base = o.flow.steady();
   const MuCurve curve = o.flow.make_curve();
   for (const double Lx : spec.Lx) {
-    TwodSettings point = spec.twod_settings;  // the grid its point runs on (sweep.cpp)
-    point.nz = point.cells_across(Lx, o.flow.h0);
+    const TwodSettings point = point_twod_settings(spec, Lx);
     double growth = 0.0;
     try {
       growth = linear2d::surface_eigenmode(base, curve, Lx).growth_rate();

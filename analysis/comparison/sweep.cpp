@@ -66,17 +66,6 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.message = r.message;
 }
 
-// The 2D settings of a point of length Lx: the preset's cells along it (cells_along) and across
-// the layer for its wavelength (cells_across), and the --jobs workers sharing the 2D solver's
-// threads (oversubscribed threads wait on each other).
-TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
-  TwodSettings twod = spec.twod_settings;
-  twod.nx = twod.cells_along(Lx);
-  twod.nz = twod.cells_across(Lx, spec.chute.h0);
-  twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
-  return twod;
-}
-
 // The `granbench run` command of a seeded point; empty for a depth-averaged linear run (no
 // `run` equivalent).
 std::string seeded_run_command(const SweepSpec& spec, const SweepPoint& p) {
@@ -177,6 +166,14 @@ void sort_points(std::vector<SweepPoint>& points) {
 }
 
 }  // namespace
+
+TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
+  TwodSettings twod = spec.twod_settings;
+  twod.nx = twod.cells_along(Lx);
+  twod.nz = twod.cells_across(Lx, spec.chute.h0);
+  twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
+  return twod;
+}
 
 std::string sweep_part_path(const std::string& out, int rank) {
   return out + ".rank" + std::to_string(rank) + ".h5";

@@ -67,6 +67,11 @@ struct SweepSpec {
   int rank = 0, ranks = 1;
 };
 
+// The 2D settings of the point of length Lx: the preset's cells along it (cells_along) and across
+// the layer for its wavelength (cells_across), and the --jobs workers sharing the 2D solver's
+// threads (oversubscribed threads wait on each other). The one place a point's grid is made.
+TwodSettings point_twod_settings(const SweepSpec& spec, double Lx);
+
 // Ls from "A:B:N" (N points evenly spaced from A to B inclusive, 0 < A <= B, 1 <= N <= 10000);
 // throws std::invalid_argument.
 std::vector<double> parse_range(const std::string& text);

@@ -49,9 +49,10 @@ struct TwodSettings {
   // fine grid, 3.5 times slower a step (docs/performance.md, twenty-eighth session).
   static constexpr double reference_length = 0.08;
   int cells_along(double Lx) const {
-    const int cells = std::max(nx, static_cast<int>(std::lround(nx * Lx / reference_length)));
-    return 16 * ((cells + 15) / 16);
+    return multiple_of_16(std::max(nx, static_cast<int>(std::lround(nx * Lx / reference_length))));
   }
+  // n rounded up to a multiple of 16: a count the pressure multigrid halves four times.
+  static int multiple_of_16(int n) { return 16 * ((n + 15) / 16); }
   // Across the layer, compare and sweep keep the preset's nz for waves of
   // longest_wave_to_refine h0 and longer, and refine a shorter wave's grid in proportion to
   // 1 / wavelength, so that dz stays at most wavelength / (cells per h0 x 7.5): 240 cells per

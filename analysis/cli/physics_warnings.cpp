@@ -65,10 +65,11 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
   std::snprintf(buf, sizeof buf,
                 "a small growth rate: the exact 2D theory gives %.3g 1/s, and on %.3g cells per "
                 "h0 the 2D model is expected about %.2g 1/s (%.0f %%) under it at a wave of %.3g "
-                "h0 (the measured law 0.17 sqrt(g/h0) (k dz)^1.4, docs/twod-validation.md §3); "
-                "about %.0f cells per h0 would bring that to 5 %%",
+                "h0 (the measured law %.2g sqrt(g/h0) (k dz)^%.2g, docs/twod-validation.md §3); "
+                "about %.0f cells per h0 would bring that to %.0f %%",
                 exact_growth, base.h0 / dz, deficit, 100.0 * deficit / exact_growth,
-                wavelength / base.h0, base.h0 / dz_aimed);
+                wavelength / base.h0, kGrowthDeficitCoefficient, kGrowthDeficitOrder,
+                base.h0 / dz_aimed, 100.0 * kAimed);
   return std::string(buf);
 }
 

@@ -22,23 +22,23 @@ void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Meas
         s << std::setprecision(6) << v.get<double>();
       return s.str();
     };
-    std::cout << "depthavg run (" << j["status"].get<std::string>()
-              << "), chi = " << j["chi"].get<double>() << ", " << o.flow.curve << " curve, angle "
-              << o.flow.angle_deg << " deg, h0 = " << o.flow.h0 << " m, Lx = " << o.Lx
-              << " m, nx = " << o.nx << "\n"
-              << "  t reached        " << j["t_reached"].get<double>() << " s in "
-              << j["wall_seconds"].get<double>() << " s wall\n"
-              << "  CVODE            " << j["steps"].get<long>() << " steps, "
-              << j["rhs_evals"].get<long>() << " RHS evaluations, "
-              << j["linear_iterations"].get<long>() << " linear iterations\n"
-              << "  mass error       " << j["mass_error"].get<double>() << " (relative)\n"
-              << "  flux at end      " << j["flux"].get<double>() << " m^2/s\n"
-              << "  growth rate      " << show(j["growth_rate"])
-              << " 1/s   (7.11): " << j["growth_rate_exact"].get<double>()
-              << "   (7.12): " << show(j["growth_rate_712"]) << "\n"
-              << "  phase speed      " << show(j["phase_speed"])
-              << " m/s   (7.11): " << j["phase_speed_exact"].get<double>() << "\n"
-              << "  wave speed       " << show(j["wave_speed"]) << " m/s "
+    std::cout << "depthavg run (" << j.at("status").get<std::string>()
+              << "), chi = " << j.at("chi").get<double>() << ", " << o.flow.curve
+              << " curve, angle " << o.flow.angle_deg << " deg, h0 = " << o.flow.h0
+              << " m, Lx = " << o.Lx << " m, nx = " << o.nx << "\n"
+              << "  t reached        " << j.at("t_reached").get<double>() << " s in "
+              << j.at("wall_seconds").get<double>() << " s wall\n"
+              << "  CVODE            " << j.at("steps").get<long>() << " steps, "
+              << j.at("rhs_evals").get<long>() << " RHS evaluations, "
+              << j.at("linear_solves").get<long>() << " linear solves\n"
+              << "  mass error       " << j.at("mass_error").get<double>() << " (relative)\n"
+              << "  flux at end      " << j.at("flux").get<double>() << " m^2/s\n"
+              << "  growth rate      " << show(j.at("growth_rate"))
+              << " 1/s   (7.11): " << j.at("growth_rate_exact").get<double>()
+              << "   (7.12): " << show(j.at("growth_rate_712")) << "\n"
+              << "  phase speed      " << show(j.at("phase_speed"))
+              << " m/s   (7.11): " << j.at("phase_speed_exact").get<double>() << "\n"
+              << "  wave speed       " << show(j.at("wave_speed")) << " m/s "
               << wave_speed_note(m.wave) << "\n";
     if (!m.spectral.found())
       std::cout << "  growth rate not measured: " << m.spectral.reason << "\n";
@@ -73,7 +73,6 @@ void write_depthavg_run(const RunOptions& o, const DepthAvgOptions& mo,
       {"seed", static_cast<double>(o.seed)},
       {"t_end", o.t_end},
       {"dt_out", j.at("dt_out").get<double>()},
-      {"frame_speed", space.frame_speed},
       {"rtol", o.rtol},
       {"atol", o.atol},
       {"chi", space.chi},

@@ -87,3 +87,32 @@ TEST(CliFoundation, BadInputGivesOneLineExitTwoAndNoFile) {
     EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
   }
 }
+
+// The text report that each command prints without --json (what a user reads first) completes:
+// exit 0, and the lines that name its figures. The depth-averaged run's report read a key its
+// JSON no longer had (linear_iterations, renamed linear_solves) and ended in an internal error,
+// exit 1, while every JSON test passed.
+TEST(CliFoundation, EveryCommandsTextReportCompletes) {
+  const auto dir = std::filesystem::temp_directory_path() / "granbench_text_reports";
+  std::filesystem::create_directories(dir);
+  const std::string out = (dir / "out.h5").string();
+  struct Case {
+    std::string args, line;
+  };
+  const Case cases[] = {
+      {"wellposed", "I"},
+      {"steady", "I_zeta"},
+      {"dispersion --Lx 0.08", "growth"},
+      {"run --model depthavg --Lx 0.08 --nx 64 --t-end 0.5", "linear solves"},
+      {"run --model depthavg --Lx 0.08 --nx 64 --t-end 0.5 --out " + out, "growth rate"},
+      {"run --model twod --nx 32 --nz 16 --t-end 0.005 --checkpoint-every 0 --out " + out,
+       "growth"},
+      {"compare --nx 32 --nz 16 --nx-depthavg 32 --t-end 0.005 --out " + out, "twod"},
+  };
+  for (const auto& c : cases) {
+    const auto r = run(c.args + " --quiet");
+    EXPECT_EQ(r.code, 0) << c.args << "\n" << r.err;
+    EXPECT_NE(r.out.find(c.line), std::string::npos) << c.args << "\n" << r.out;
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -38,7 +38,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--Lx", o.Lx, "domain length Lx [m], > 0")
       ->check(positive())
       ->capture_default_str();
-  app.add_option("--nx", o.nx, "cells along x, in [8, 1048576]")
+  app.add_option("--nx", o.nx,
+                 "cells along x, in [8, 1048576]; --model twod: by default 160 per 8 cm as in "
+                 "compare (at least 160, a multiple of 16)")
       ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20))
       ->capture_default_str();
   app.add_option("--a0", o.a0, "perturbation amplitude a0 [m] of (7.2), in [0, h0)")
@@ -126,6 +128,11 @@ void add_run_command(CLI::App& app) {
        "granbench run --model twod --restart run.checkpoint.h5 --t-end 10 --out run.h5"},
       {0, 2, 3, 130, 143}));
   sub->callback([sub, run, depthavg, twod, depthavg_only, twod_only] {
+    // Without --nx (on the command line or in a --config file), the 2D model takes the cells
+    // along x that compare and sweep give this length: the preset's 160 per 8 cm, at least 160,
+    // a multiple of 16 (TwodSettings::cells_along). 256 stays the depth-averaged default.
+    if (parse_model(run->model) == Model::TwoD && sub->count("--nx") == 0)
+      run->nx = std::size_t(twod->settings.cells_along(run->Lx));
     check_run_options(*run);
     if (parse_model(run->model) == Model::TwoD)
       refuse_options_of_other_model(*sub, depthavg_only, "depthavg");

@@ -22,7 +22,8 @@ namespace granbench::cli {
 
 struct TwodOptions {
   // The solver settings, shared with compare and sweep (analysis/comparison/twod_settings.hpp);
-  // settings.nx is unused here (RunOptions::nx), settings.Lz_over_h0 follows --Lz.
+  // settings.nx (the preset's along 8 cm) gives --nx its default (cells_along; the run's grid is
+  // RunOptions::nx), settings.Lz_over_h0 follows --Lz.
   TwodSettings settings = [] {
     TwodSettings s;
     s.nz = 64;

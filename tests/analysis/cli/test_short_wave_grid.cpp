@@ -1,8 +1,8 @@
 // The default 2D grids give a wave shorter than 7.5 h0 more cells across the layer
 // (TwodSettings::cells_across): `run --model twod` without --nz, and `compare`, put 96 cells
 // (48 per h0) across the 2 cm wave of the section 7 case and 64 across the 8 cm one; an explicit
-// --nz is kept. End to end: the grid is read back from each command's HDF5 output. Nearer the
-// cutoff, where that grid is not enough, `run` warns.
+// --nz is kept; along x `run` takes compare's count. End to end: the grid is read back from each
+// command's HDF5 output. Nearer the cutoff, where that grid is not enough, `run` warns.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -25,8 +25,8 @@ class ShortWaveGrid : public ::testing::Test {
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
-  // The nz that `args` (a command writing --out) records under `key` in its file's root.
-  double recorded_nz(const std::string& args, const std::string& key) {
+  // The cell count that `args` (a command writing --out) records under `key` in its file's root.
+  double recorded_cells(const std::string& args, const std::string& key) {
     const std::string out = (dir_ / "out.h5").string();
     fs::remove(out);
     const auto r = run_granbench(args + " --quiet --out " + out, "short_wave");
@@ -38,10 +38,22 @@ class ShortWaveGrid : public ::testing::Test {
 
 TEST_F(ShortWaveGrid, RunRefinesAcrossTheLayerUnlessNzIsGiven) {
   const std::string run = "run --model twod --nx 16 --t-end 1e-4 --checkpoint-every 0 ";
-  EXPECT_EQ(recorded_nz(run + "--Lx 0.02", "nz"), 96.0);
-  EXPECT_EQ(recorded_nz(run + "--Lx 0.08 --mode 4", "nz"), 96.0);  // the wave, not the domain
-  EXPECT_EQ(recorded_nz(run + "--Lx 0.08", "nz"), 64.0);
-  EXPECT_EQ(recorded_nz(run + "--Lx 0.02 --nz 40", "nz"), 40.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.02", "nz"), 96.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.08 --mode 4", "nz"), 96.0);  // the wave, not the domain
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.08", "nz"), 64.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.02 --nz 40", "nz"), 40.0);
+}
+
+// Along x, `run --model twod` without --nx takes compare's and sweep's cells for the length (at
+// least the preset's 160, dx at most its 0.5 mm, a multiple of 16); an explicit --nx is kept,
+// and the depth-averaged model keeps its own default of 256.
+TEST_F(ShortWaveGrid, RunTakesComparesCellsAlongUnlessNxIsGiven) {
+  const std::string run = "run --model twod --nz 16 --t-end 1e-4 --checkpoint-every 0 ";
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.02", "nx"), 160.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.08", "nx"), 160.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.1", "nx"), 208.0);  // 200 cells of 0.5 mm, rounded up
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.02 --nx 48", "nx"), 48.0);
+  EXPECT_EQ(recorded_cells("run --model depthavg --t-end 1e-3 --Lx 0.02", "nx"), 256.0);
 }
 
 // Near the cutoff the refined grid is not enough: `run` says so, in its JSON and on stderr, for
@@ -61,9 +73,9 @@ TEST_F(ShortWaveGrid, RunWarnsOfASmallGrowthNearTheCutoff) {
 
 TEST_F(ShortWaveGrid, CompareRefinesAcrossTheLayerUnlessNzIsGiven) {
   const std::string compare = "compare --nx 16 --nx-depthavg 16 --t-end 1e-3 ";
-  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02", "twod_nz"), 96.0);
-  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02 --resolution coarse", "twod_nz"), 48.0);
-  EXPECT_EQ(recorded_nz(compare + "--Lx 0.02 --nz 40", "twod_nz"), 40.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.02", "twod_nz"), 96.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --resolution coarse", "twod_nz"), 48.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --nz 40", "twod_nz"), 40.0);
 }
 
 }  // namespace

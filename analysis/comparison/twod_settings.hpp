@@ -69,7 +69,8 @@ struct TwodSettings {
   int cells_across(double wavelength, double h0) const {
     const double r = refinement_across(wavelength, h0);
     if (r <= 1.0) return nz;
-    return 16 * static_cast<int>(std::ceil(nz * r / 16.0 - 1e-9));
+    // (less 1.6e-8: a product that round-off lifts just above a multiple of 16 stays on it)
+    return multiple_of_16(static_cast<int>(std::ceil(nz * r - 1.6e-8)));
   }
   double domain_height(double h0) const {
     return Lz_over_h0 > 0.0 ? Lz_over_h0 * h0 : twod::mid_cell_domain_height(h0, nz);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -153,7 +154,17 @@ void add_flow_options(CLI::App& app, FlowOptions& o, bool add_slope) {
 void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
   app.add_flag("--json", o.json, "print the result as one JSON object on stdout");
   app.add_option("--out", o.out, "write data to this HDF5 file");
-  if (with_plot) app.add_option("--plot", o.plot, "draw the figure into this PNG file");
+  // A name without an extension gets ".png": matplotlib would add it anyway, and the report
+  // must name the file that was written.
+  if (with_plot)
+    app.add_option("--plot", o.plot,
+                   "draw the figure into this PNG file (\".png\" added if no extension)")
+        ->transform(CLI::Validator(
+            [](std::string& path) {
+              if (!path.empty() && std::filesystem::path(path).extension().empty()) path += ".png";
+              return std::string();
+            },
+            "PATH"));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   // Expanded into options before parsing (config_file.hpp); declared here for --help.
   app.add_option("--config")

@@ -116,3 +116,15 @@ TEST(CliFoundation, EveryCommandsTextReportCompletes) {
   }
   std::filesystem::remove_all(dir);
 }
+
+// --plot without an extension writes NAME.png, and the report names that file.
+TEST(CliFoundation, APlotNamedWithoutExtensionIsWrittenAsPng) {
+  const auto dir = std::filesystem::temp_directory_path() / "granbench_plot_name";
+  std::filesystem::create_directories(dir);
+  const std::string stem = (dir / "wellposed").string();
+  const auto r = run("wellposed --plot " + stem);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(stem + ".png"));
+  EXPECT_NE(r.out.find("figure written to " + stem + ".png"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}

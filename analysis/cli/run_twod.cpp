@@ -103,7 +103,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   } catch (const std::exception&) {
     if (o.init == "eigenmode") throw;
   }
-  const double seeded_speed = eigenmode ? eigenmode->phase_speed() : NAN;
+  const SeededTheory seeded =
+      eigenmode ? SeededTheory{eigenmode->growth_rate(), eigenmode->phase_speed()} : SeededTheory{};
   if (eigenmode)
     if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate()))
       warnings.push_back(*w);
@@ -148,9 +149,9 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   TwodRunReport report;
   MeasureOptions measure_opt;
   measure_opt.mode = o.mode;
-  measure_opt.seeded_phase_speed = seeded_speed;
+  measure_opt.seeded_phase_speed = seeded.phase_speed;
   report.measured = measure(res.series, measure_opt);
-  report.json = twod_result_json(res, solver, base, report.measured, seeded_speed, schedule.dt_out);
+  report.json = twod_result_json(res, solver, base, report.measured, seeded, schedule.dt_out);
   report.json["status"] = run_status_name(res.status);
   report.json["warnings"] = warnings;
   report.json["message"] = message;

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -69,9 +70,14 @@ TwodRunReport run_twod_model(const RunOptions& run, const TwodOptions& model,
 // false; and the keys of a 2D run's JSON that come from the run itself (twod_report.cpp).
 std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_line(
     const RunOptions& run, bool show);
+// The seeded wave's exact 2D linear theory (the surface mode, stress-free surface), NaN where it
+// was not found: the run's JSON and table show it beside the measurement.
+struct SeededTheory {
+  double growth_rate = NAN, phase_speed = NAN;
+};
 nlohmann::json twod_result_json(const twod::RunResult& result, const twod::Solver& solver,
                                 const SteadyState& base, const Measurement& measured,
-                                double seeded_speed, double dt_out);
+                                SeededTheory seeded, double dt_out);
 
 // `granbench run --model twod`: run_twod_model under Ctrl-C and SIGTERM handling; prints the
 // table or JSON (twod_report.cpp). Throws CommandFailed after saving what was computed when

@@ -36,7 +36,7 @@ std::function<void(const twod::Solver&, const SurfaceSeries&)> twod_progress_lin
 
 nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& solver,
                                 const SteadyState& base, const Measurement& measured,
-                                double seeded_speed, double dt_out) {
+                                SeededTheory seeded, double dt_out) {
   const SurfaceSeries& kept = res.series;
   const twod::RunStatistics st = solver.statistics();
   const auto last_h = kept.h_at(kept.nt() - 1);
@@ -60,7 +60,8 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
       {"frame_speed", solver.grid().frame_speed},  // the grid's; the outputs are in the lab frame
       {"h_mean", h_mean},
       {"flux", twod::mean_flux(solver.grid(), solver.state())},
-      {"phase_speed_theory", number_or_null(seeded_speed)},
+      {"growth_rate_theory", number_or_null(seeded.growth_rate)},
+      {"phase_speed_theory", number_or_null(seeded.phase_speed)},
       {"I_range", std::isfinite(res.I_min) ? nlohmann::json{res.I_min, res.I_max} : nullptr},
       {"illposed_fraction", res.last.illposed_fraction},
       {"illposed_fraction_max", res.illposed_fraction_max},
@@ -96,6 +97,18 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
               << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
               << show("phase_speed") << " m/s"
               << (growth.found() ? "" : "  (not measured: " + growth.reason + ")") << "\n";
+    if (!j["growth_rate_theory"].is_null()) {
+      const double sigma = j["growth_rate_theory"].get<double>(),
+                   c = j["phase_speed_theory"].get<double>();
+      std::cout << "  exact 2D linear  " << sigma << " 1/s, " << c
+                << " m/s (the seeded surface wave, stress-free surface)";
+      if (growth.found())
+        std::cout << std::fixed << std::setprecision(2) << std::showpos << ": measured "
+                  << 100.0 * (j["growth_rate"].get<double>() / sigma - 1.0) << " %, "
+                  << 100.0 * (j["phase_speed"].get<double>() / c - 1.0) << " %" << std::defaultfloat
+                  << std::setprecision(6);
+      std::cout << "\n";
+    }
     for (std::size_t i = 0; i < growth.modes.size(); ++i)
       if (i != growth.seeded)
         std::cout << "  other wave       growth " << growth.modes[i].growth_rate << " 1/s, speed "

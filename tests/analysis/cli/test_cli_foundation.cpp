@@ -128,3 +128,20 @@ TEST(CliFoundation, APlotNamedWithoutExtensionIsWrittenAsPng) {
   EXPECT_NE(r.out.find("figure written to " + stem + ".png"), std::string::npos) << r.out;
   std::filesystem::remove_all(dir);
 }
+
+// `run --model twod` reports the seeded wave's exact 2D theory beside its measurement, the same
+// numbers `dispersion --theory twod` gives, in its JSON and in its table.
+TEST(CliFoundation, TwodRunShowsTheExact2DTheoryOfItsWave) {
+  const auto theory = run("dispersion --theory twod --Lx 0.04 --json");
+  ASSERT_EQ(theory.code, 0) << theory.err;
+  const auto mode = nlohmann::json::parse(theory.out)["modes"][0];
+  const std::string args = "run --model twod --Lx 0.04 --nx 32 --nz 16 --t-end 0.005 --quiet";
+  const auto r = run(args + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["growth_rate_theory"].get<double>(), mode["growth_rate"].get<double>(), 1e-9);
+  EXPECT_NEAR(j["phase_speed_theory"].get<double>(), mode["phase_speed"].get<double>(), 1e-9);
+  const auto text = run(args);
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("exact 2D linear"), std::string::npos) << text.out;
+}

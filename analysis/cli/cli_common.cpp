@@ -164,7 +164,7 @@ void add_output_options(CLI::App& app, OutputOptions& o, bool with_plot) {
               if (!path.empty() && std::filesystem::path(path).extension().empty()) path += ".png";
               return std::string();
             },
-            "PATH"));
+            ""));
   app.add_flag("--quiet", o.quiet, "no progress on stderr");
   // Expanded into options before parsing (config_file.hpp); declared here for --help.
   app.add_option("--config")

@@ -97,16 +97,16 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
               << "  growth rate      " << show("growth_rate") << " 1/s, phase speed "
               << show("phase_speed") << " m/s"
               << (growth.found() ? "" : "  (not measured: " + growth.reason + ")") << "\n";
-    if (!j["growth_rate_theory"].is_null()) {
-      const double sigma = j["growth_rate_theory"].get<double>(),
-                   c = j["phase_speed_theory"].get<double>();
+    if (!j.at("growth_rate_theory").is_null()) {
+      const double sigma = j.at("growth_rate_theory").get<double>(),
+                   c = j.at("phase_speed_theory").get<double>();
       std::cout << "  exact 2D linear  " << sigma << " 1/s, " << c
                 << " m/s (the seeded surface wave, stress-free surface)";
       if (growth.found())
         std::cout << std::fixed << std::setprecision(2) << std::showpos << ": measured "
-                  << 100.0 * (j["growth_rate"].get<double>() / sigma - 1.0) << " %, "
-                  << 100.0 * (j["phase_speed"].get<double>() / c - 1.0) << " %" << std::defaultfloat
-                  << std::setprecision(6);
+                  << 100.0 * (j.at("growth_rate").get<double>() / sigma - 1.0) << " %, "
+                  << 100.0 * (j.at("phase_speed").get<double>() / c - 1.0) << " %"
+                  << std::defaultfloat << std::setprecision(6);
       std::cout << "\n";
     }
     for (std::size_t i = 0; i < growth.modes.size(); ++i)

@@ -100,7 +100,7 @@ TEST(CliFoundation, EveryCommandsTextReportCompletes) {
     std::string args, line;
   };
   const Case cases[] = {
-      {"wellposed", "I"},
+      {"wellposed", "upper neutral point I2N"},
       {"steady", "I_zeta"},
       {"dispersion --Lx 0.08", "growth"},
       {"run --model depthavg --Lx 0.08 --nx 64 --t-end 0.5", "linear solves"},

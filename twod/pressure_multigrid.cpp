@@ -8,9 +8,19 @@
 //                Whole columns are solved at once because the grid is finer in z than in x
 //                (coefficient ratio (dx/dz)^2) and the density jump of the free surface
 //                (beta jumps by rho_g/rho_l ~ 1e3) runs across the columns.
-//   transfer     piecewise-constant prolongation P, restriction R = P^T (sum of 2 x 2 cells).
-//   coarse op.   face coefficients averaged over the two fine faces that make up a coarse
-//                face (the rediscretisation for constant beta; keeps the jump in place).
+//   coarsening   both directions where the cells are at least twice as wide as tall; x alone
+//                (semi-coarsening) below that. The z-line smoother damps every error that
+//                varies fast in z, and the zebra order the error that varies fast in x; on
+//                nearly square cells the full coarsening's coarse operators then average the
+//                surface's density jump over two rows, and the cycle converges about half as
+//                fast (160 x 16 cells, dx = dz: 16.4 projection iterations per step with full
+//                coarsening, 8.0 with x alone first; docs/performance.md, thirtieth session).
+//   transfer     piecewise-constant prolongation P, restriction R = P^T (sum of the 2 x 2 cells,
+//                or of the 2 x 1 cells after coarsening in x alone).
+//   coarse op.   face coefficients of the rediscretisation for constant beta: a coarse face
+//                made of two fine faces takes their mean (full coarsening) or their sum (a
+//                z-face after x alone), one made of one fine face half of it (an x-face after x
+//                alone: twice the distance); the jump stays in place.
 //   coarsest     dense LDLT once the grid cannot be halved (or is tiny); 20 symmetric line
 //                sweeps instead when an odd size stops the coarsening above 2048 cells
 //                (kDirectCoarsestCells): several times the cost of a step, which is why compare
@@ -69,35 +79,55 @@ bool can_halve(int nx, int nz) {
   return nx % 2 == 0 && nz % 2 == 0 && nz >= 4 && nx >= 4 && nx * nz > 64;
 }
 
-std::pair<int, int> coarsest_level(int nx, int nz) {
-  while (can_halve(nx, nz)) {
+namespace {
+
+bool can_halve_x(int nx, int nz) {
+  return nx % 2 == 0 && nx >= 4 && nx * nz > 64;
+}
+
+// The next coarser level's counts and aspect, or false at the coarsest.
+bool coarsen(int& nx, int& nz, double& aspect) {
+  if (aspect < kCoarsenXAloneBelowAspect) {
+    if (!can_halve_x(nx, nz)) return false;
     nx /= 2;
-    nz /= 2;
+    aspect *= 2.0;
+    return true;
+  }
+  if (!can_halve(nx, nz)) return false;
+  nx /= 2;
+  nz /= 2;
+  return true;
+}
+
+}  // namespace
+
+std::pair<int, int> coarsest_level(int nx, int nz, double aspect) {
+  while (coarsen(nx, nz, aspect)) {
   }
   return {nx, nz};
 }
 
-void PressureMultigrid::set_operator(const PoissonLevel& fine) {
-  PoissonLevel& F = fine_operator(fine.nx, fine.nz);
+void PressureMultigrid::set_operator(const PoissonLevel& fine, double aspect) {
+  PoissonLevel& F = fine_operator(fine.nx, fine.nz, aspect);
   F.cx = fine.cx;
   F.cz = fine.cz;
   rebuild();
 }
 
-PoissonLevel& PressureMultigrid::fine_operator(int nx, int nz) {
-  if (levels_.empty() || levels_.front().nx != nx || levels_.front().nz != nz) {
+PoissonLevel& PressureMultigrid::fine_operator(int nx, int nz, double aspect) {
+  if (levels_.empty() || levels_.front().nx != nx || levels_.front().nz != nz ||
+      aspect != aspect_) {
+    aspect_ = aspect;
     PoissonLevel fine;
     fine.nx = nx;
     fine.nz = nz;
     fine.cx.assign(std::size_t(nx) * nz, 0.0);
     fine.cz.assign(std::size_t(nx) * (nz + 1), 0.0);
     levels_.assign(1, fine);
-    while (true) {
-      const PoissonLevel& L = levels_.back();
-      if (!can_halve(L.nx, L.nz)) break;
+    for (int cx = nx, cz = nz; coarsen(cx, cz, aspect);) {
       PoissonLevel C;
-      C.nx = L.nx / 2;
-      C.nz = L.nz / 2;
+      C.nx = cx;
+      C.nz = cz;
       C.cx.assign(C.nx * C.nz, 0.0);
       C.cz.assign(C.nx * (C.nz + 1), 0.0);
       levels_.push_back(C);
@@ -112,7 +142,14 @@ void PressureMultigrid::rebuild() {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
+    const bool x_alone = C.nz == F.nz;
     parallel_for(C.nx, F.nx * F.nz >= kParallelCells, [&](int i) {
+      if (x_alone) {
+        for (int k = 0; k < C.nz; ++k) C.cx[C.cell(i, k)] = 0.5 * F.cx[F.cell(2 * i, k)];
+        for (int k = 0; k <= C.nz; ++k)
+          C.cz[C.zface(i, k)] = F.cz[F.zface(2 * i, k)] + F.cz[F.zface(2 * i + 1, k)];
+        return;
+      }
       for (int k = 0; k < C.nz; ++k)
         C.cx[C.cell(i, k)] = 0.5 * (F.cx[F.cell(2 * i, 2 * k)] + F.cx[F.cell(2 * i, 2 * k + 1)]);
       for (int k = 0; k <= C.nz; ++k)
@@ -238,10 +275,11 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   // neighbours' final values) and an even column's is what its neighbours added after it was
   // solved with them at zero:
   //   r_i = b_i - (A x)_i = cx_left x_{i-1} + cx_right x_{i+1}   (i even).
-  // R = P^T sums the 2 x 2 fine residuals of a coarse cell, of which only the even column's pair
-  // is non-zero; this replaces the residual's full product and its second pass.
+  // R = P^T sums the 2 x 2 (or, x alone, 2 x 1) fine residuals of a coarse cell, of which only
+  // the even column's are non-zero; this replaces the residual's full product and its second pass.
   x.resize(L.nx * L.nz);
   line_sweep(L, b, x, true, true);
+  const bool x_alone = C.nz == L.nz;
   parallel_for(C.nx, parallel, [&](int ic) {
     const int i = 2 * ic, il = i == 0 ? L.nx - 1 : i - 1, ir = i + 1;
     const double* cl = &L.cx[L.cell(i, 0)];
@@ -249,6 +287,10 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
     const double* xl = &x[L.cell(il, 0)];
     const double* xr = &x[L.cell(ir, 0)];
     double* rci = &rc[C.cell(ic, 0)];
+    if (x_alone) {
+      for (int k = 0; k < C.nz; ++k) rci[k] = cl[k] * xl[k] + cr[k] * xr[k];
+      return;
+    }
     for (int kc = 0; kc < C.nz; ++kc) {
       const int k = 2 * kc;
       rci[kc] = (cl[k] * xl[k] + cr[k] * xr[k]) + (cl[k + 1] * xl[k + 1] + cr[k + 1] * xr[k + 1]);
@@ -259,7 +301,10 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   parallel_for(L.nx, parallel, [&](int i) {  // P: piecewise constant
     double* xi = &x[L.cell(i, 0)];
     const double* xci = &xc[C.cell(i / 2, 0)];
-    for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
+    if (x_alone)
+      for (int k = 0; k < L.nz; ++k) xi[k] += xci[k];
+    else
+      for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
   });
   line_sweep(L, b, x, false, false);
 }

@@ -23,19 +23,23 @@ struct PoissonLevel {
 };
 
 // The levels: a grid is halved while both counts are even, nz >= 4, nx >= 4 and it has more than
-// 64 cells. The coarsest is solved directly up to kDirectCoarsestCells cells and smoothed by line
-// sweeps above (an odd count on a large grid), at several times the cost of a step.
+// 64 cells; a level whose cells are less than kCoarsenXAloneBelowAspect times as wide as tall
+// (dx / dz) is halved along x alone (then nx even, nx >= 4 and more than 64 cells suffice). The
+// coarsest is solved directly up to kDirectCoarsestCells cells and smoothed by line sweeps above
+// (an odd count on a large grid), at several times the cost of a step.
 inline constexpr int kDirectCoarsestCells = 2048;
+inline constexpr double kCoarsenXAloneBelowAspect = 2.0;
 bool can_halve(int nx, int nz);
-std::pair<int, int> coarsest_level(int nx, int nz);  // (nx, nz) of the coarsest level
+// (nx, nz) of the coarsest level for a fine grid of cells dx / dz = aspect
+std::pair<int, int> coarsest_level(int nx, int nz, double aspect);
 
 class PressureMultigrid {
  public:
-  // Set the finest operator; coarse levels are rebuilt from it.
-  void set_operator(const PoissonLevel& fine);
-  // The same without a copy: fill the coefficients of fine_operator(nx, nz) (the finest level,
-  // sized and kept from one call to the next), then call rebuild().
-  PoissonLevel& fine_operator(int nx, int nz);
+  // Set the finest operator, on cells of dx / dz = aspect; coarse levels are rebuilt from it.
+  void set_operator(const PoissonLevel& fine, double aspect);
+  // The same without a copy: fill the coefficients of fine_operator(nx, nz, aspect) (the finest
+  // level, sized and kept from one call to the next), then call rebuild().
+  PoissonLevel& fine_operator(int nx, int nz, double aspect);
   void rebuild();
   const PoissonLevel& fine() const { return levels_.front(); }
   // z = M^{-1} r: one symmetric V(1,1)-cycle from z = 0.
@@ -48,6 +52,7 @@ class PressureMultigrid {
                   bool from_zero) const;
 
   std::vector<PoissonLevel> levels_;
+  double aspect_ = 0.0;  // dx / dz of the finest level's cells
   std::vector<Eigen::VectorXd> rhs_c_, x_c_;
   Eigen::LDLT<Eigen::MatrixXd> coarsest_;
   bool direct_coarsest_ = true;

@@ -55,7 +55,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   });
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {
-    PoissonLevel& op = multigrid_.fine_operator(nx, nz);  // filled in place, no copy
+    PoissonLevel& op = multigrid_.fine_operator(nx, nz, g.dx / g.dz);  // filled in place
     parallel_for(nx, true, [&](int i) {
       for (int k = 0; k < nz; ++k) op.cx[op.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
       op.cz[op.zface(i, 0)] = 0.0;  // bed: no flux

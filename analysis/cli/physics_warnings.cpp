@@ -73,8 +73,8 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
   return std::string(buf);
 }
 
-std::optional<std::string> twod_grid_cost_warning(int nx, int nz) {
-  const auto [cx, cz] = twod::coarsest_level(nx, nz);
+std::optional<std::string> twod_grid_cost_warning(int nx, int nz, double aspect) {
+  const auto [cx, cz] = twod::coarsest_level(nx, nz, aspect);
   if (cx * cz <= twod::kDirectCoarsestCells) return std::nullopt;
   char buf[400];
   std::snprintf(buf, sizeof buf,

@@ -42,10 +42,11 @@ double expected_twod_growth_deficit(const SteadyState& base, double dz, double w
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
                                                         double wavelength, double exact_growth);
 
-// When the pressure multigrid cannot coarsen an nx x nz grid to one it solves directly (an odd
-// count, twod/pressure_multigrid.hpp), a warning that each step will cost several times more and
-// the counts, rounded up to multiples of 16, that avoid it; nothing otherwise.
-std::optional<std::string> twod_grid_cost_warning(int nx, int nz);
+// When the pressure multigrid cannot coarsen an nx x nz grid of cells dx / dz = aspect to one it
+// solves directly (an odd count, twod/pressure_multigrid.hpp), a warning that each step will
+// cost several times more and the counts, rounded up to multiples of 16, that avoid it; nothing
+// otherwise.
+std::optional<std::string> twod_grid_cost_warning(int nx, int nz, double aspect);
 
 void print_warnings(const std::vector<std::string>& warnings);
 

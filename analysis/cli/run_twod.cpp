@@ -62,7 +62,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   grid.frame_speed = mo.settings.frame_fraction * base.u_surface;  // (twod/frame.hpp)
   const double wavelength = o.Lx / o.mode;
   std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
-  if (auto w = twod_grid_cost_warning(grid.nx, grid.nz)) warnings.push_back(*w);
+  if (auto w = twod_grid_cost_warning(grid.nx, grid.nz, grid.dx / grid.dz)) warnings.push_back(*w);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so
   // a restart with the same options continues the first run's grids.

@@ -23,14 +23,14 @@ namespace {
 // Face coefficients area/(distance rho) for heavy grains (rho 1500) under a light fluid
 // (rho_light: 0.15, the former default, a 1e4 density jump; 0.015, the default, 1e5; 1.5e-3, 1e6,
 // the lightest fluid of the light-fluid study), the surface a sine across the columns, on a 1 mm x
-// 0.25 mm grid.
-PoissonLevel layered_operator(int nx, int nz, double rho_light) {
+// 0.25 mm grid (aspect dx / dz = 4), or on cells of another aspect 1 mm wide.
+PoissonLevel layered_operator(int nx, int nz, double rho_light, double aspect = 4.0) {
   PoissonLevel L;
   L.nx = nx;
   L.nz = nz;
   L.cx.assign(std::size_t(nx) * nz, 0.0);
   L.cz.assign(std::size_t(nx) * (nz + 1), 0.0);
-  const double dx = 1e-3, dz = 2.5e-4;
+  const double dx = 1e-3, dz = dx / aspect;
   auto rho = [&](double x, double z) {
     const double h = 0.5 * nz * dz * (1.0 + 0.2 * std::sin(2.0 * M_PI * x / (nx * dx)));
     return z < h ? 1500.0 : rho_light;
@@ -66,48 +66,53 @@ TEST(PressureMultigrid, SymmetricPositivePreconditionerOnEveryColumnGrouping) {
   // nx = 24: 12 columns per colour, 3 groups of four; 26: 13, a remainder of one; 30: 15, a
   // remainder of three; 33: odd, the last column alone. Large enough levels (>= 2048 cells)
   // take the parallel path; the smaller ones the serial one, with the same groups.
-  for (const double rho_light : {0.15, 0.015, 1.5e-3})
-    for (int nx : {24, 26, 30, 33, 160}) {
-      SCOPED_TRACE(nx);
-      SCOPED_TRACE(rho_light);
-      const int nz = nx == 160 ? 64 : 16;
-      PressureMultigrid mg;
-      mg.set_operator(layered_operator(nx, nz, rho_light));
-      const int n = nx * nz;
-      const Eigen::VectorXd r1 = random_vector(n, 1), r2 = random_vector(n, 2);
-      Eigen::VectorXd z1, z2;
-      mg.precondition(r1, z1);
-      mg.precondition(r2, z2);
-      EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-10 * std::abs(r1.dot(z2)));
-      EXPECT_GT(r1.dot(z1), 0.0);
-      EXPECT_GT(r2.dot(z2), 0.0);
-    }
+  // On square cells (aspect 1) the levels are halved along x alone first.
+  for (const double aspect : {4.0, 1.0})
+    for (const double rho_light : {0.15, 0.015, 1.5e-3})
+      for (int nx : {24, 26, 30, 33, 160}) {
+        SCOPED_TRACE(nx);
+        SCOPED_TRACE(rho_light);
+        SCOPED_TRACE(aspect);
+        const int nz = nx == 160 ? 64 : 16;
+        PressureMultigrid mg;
+        mg.set_operator(layered_operator(nx, nz, rho_light, aspect), aspect);
+        const int n = nx * nz;
+        const Eigen::VectorXd r1 = random_vector(n, 1), r2 = random_vector(n, 2);
+        Eigen::VectorXd z1, z2;
+        mg.precondition(r1, z1);
+        mg.precondition(r2, z2);
+        EXPECT_NEAR(r1.dot(z2), r2.dot(z1), 1e-10 * std::abs(r1.dot(z2)));
+        EXPECT_GT(r1.dot(z1), 0.0);
+        EXPECT_GT(r2.dot(z2), 0.0);
+      }
 }
 
 TEST(PressureMultigrid, PreconditionedCgMatchesADirectSolve) {
-  for (const double rho_light : {0.15, 0.015, 1.5e-3})
-    for (int nx : {26, 33, 160}) {
-      SCOPED_TRACE(nx);
-      SCOPED_TRACE(rho_light);
-      const int nz = nx == 160 ? 32 : 16;
-      const PoissonLevel L = layered_operator(nx, nz, rho_light);
-      PressureMultigrid mg;
-      mg.set_operator(L);
-      const Eigen::VectorXd b = random_vector(nx * nz, 3);
-      Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz);
-      PcgWorkspace work;
-      const int it =
-          pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { L.apply(v, y); },
-              [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg.precondition(r, z); }, b, x,
-              1e-12, 200, work);
-      ASSERT_GT(it, 0);
-      EXPECT_LT(it, 40);  // a working multigrid needs a few tens at most, plain CG thousands
-      const Eigen::SparseMatrix<double> A = assembled(L);
-      Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
-      ASSERT_EQ(llt.info(), Eigen::Success);
-      const Eigen::VectorXd exact = llt.solve(b);
-      EXPECT_LT((x - exact).norm(), 1e-8 * exact.norm());
-    }
+  for (const double aspect : {4.0, 1.0})
+    for (const double rho_light : {0.15, 0.015, 1.5e-3})
+      for (int nx : {26, 33, 160}) {
+        SCOPED_TRACE(nx);
+        SCOPED_TRACE(rho_light);
+        SCOPED_TRACE(aspect);
+        const int nz = nx == 160 ? 32 : 16;
+        const PoissonLevel L = layered_operator(nx, nz, rho_light, aspect);
+        PressureMultigrid mg;
+        mg.set_operator(L, aspect);
+        const Eigen::VectorXd b = random_vector(nx * nz, 3);
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz);
+        PcgWorkspace work;
+        const int it =
+            pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { L.apply(v, y); },
+                [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg.precondition(r, z); }, b, x,
+                1e-12, 200, work);
+        ASSERT_GT(it, 0);
+        EXPECT_LT(it, 40);  // a working multigrid needs a few tens at most, plain CG thousands
+        const Eigen::SparseMatrix<double> A = assembled(L);
+        Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
+        ASSERT_EQ(llt.info(), Eigen::Success);
+        const Eigen::VectorXd exact = llt.solve(b);
+        EXPECT_LT((x - exact).norm(), 1e-8 * exact.norm());
+      }
 }
 
 TEST(PressureMultigrid, OneCycleAsAStationaryIterationReducesTheErrorFivefold) {
@@ -122,7 +127,7 @@ TEST(PressureMultigrid, OneCycleAsAStationaryIterationReducesTheErrorFivefold) {
       const int nz = nx == 96 ? 32 : 16;
       const PoissonLevel L = layered_operator(nx, nz, rho_light);
       PressureMultigrid mg;
-      mg.set_operator(L);
+      mg.set_operator(L, 4.0);
       const Eigen::SparseMatrix<double> A = assembled(L);
       Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(A);
       ASSERT_EQ(llt.info(), Eigen::Success);
@@ -143,4 +148,31 @@ TEST(PressureMultigrid, OneCycleAsAStationaryIterationReducesTheErrorFivefold) {
         before = after;
       }
     }
+}
+
+// On square cells the levels are halved along x alone until the cells are twice as wide as tall:
+// the full coarsening's coarse operators would average the surface's density jump over two rows.
+// Against full coarsening of the same operator (told the cells are wide), the conjugate gradients
+// need at most three quarters of the iterations: 10 against 20 here, 8.0 against 16.4 per step
+// on 160 x 16 in the solver (pressure_multigrid.cpp).
+TEST(PressureMultigrid, SquareCellsCoarsenedAlongXAloneFirstConvergeFaster) {
+  for (const double rho_light : {0.015, 1.5e-3}) {
+    SCOPED_TRACE(rho_light);
+    const int nx = 160, nz = 16;
+    const PoissonLevel L = layered_operator(nx, nz, rho_light, 1.0);
+    const Eigen::VectorXd b = random_vector(nx * nz, 5);
+    auto iterations = [&](double aspect_told) {
+      PressureMultigrid mg;
+      mg.set_operator(L, aspect_told);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(nx * nz);
+      PcgWorkspace work;
+      return pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { L.apply(v, y); },
+                 [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { mg.precondition(r, z); }, b, x,
+                 1e-10, 200, work);
+    };
+    const int x_alone_first = iterations(1.0), full = iterations(4.0);
+    ASSERT_GT(x_alone_first, 0);
+    ASSERT_GT(full, 0);
+    EXPECT_LE(x_alone_first, 0.75 * full) << x_alone_first << " against " << full;
+  }
 }

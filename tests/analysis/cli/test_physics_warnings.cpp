@@ -82,15 +82,22 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
 
 // A grid the pressure multigrid cannot coarsen to a directly solved one is named with the counts
 // that avoid it: 195 x 64 stops at once (195 is odd; 12 480 cells are smoothed, not solved), while
-// 208 x 64 halves four times and small odd grids are solved directly.
+// 208 x 64 halves four times and small odd grids are solved directly. On nearly square cells the
+// multigrid halves nx alone first, which needs nx even only.
 TEST(PhysicsWarnings, AGridTheMultigridCannotCoarsenIsNamed) {
-  const auto odd = cli::twod_grid_cost_warning(195, 64);
+  const double wide = 4.0;  // dx / dz of the default grid at 8 cm
+  const auto odd = cli::twod_grid_cost_warning(195, 64, wide);
   ASSERT_TRUE(odd.has_value());
   EXPECT_NE(odd->find("below 195 x 64"), std::string::npos) << *odd;
   EXPECT_NE(odd->find("208 x 64 cells would avoid it"), std::string::npos) << *odd;
   // 262 x 64 halves once, to 131 x 32 = 4 192 cells, still above the direct solve's 2 048
-  EXPECT_TRUE(cli::twod_grid_cost_warning(262, 64).has_value());
-  EXPECT_FALSE(cli::twod_grid_cost_warning(208, 64).has_value());
-  EXPECT_FALSE(cli::twod_grid_cost_warning(160, 64).has_value());
-  EXPECT_FALSE(cli::twod_grid_cost_warning(15, 16).has_value());  // 240 cells, solved directly
+  EXPECT_TRUE(cli::twod_grid_cost_warning(262, 64, wide).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(208, 64, wide).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(160, 64, wide).has_value());
+  EXPECT_FALSE(cli::twod_grid_cost_warning(15, 16, wide).has_value());  // 240 cells, direct
+  // square cells: 160 x 96 halves along x to 80 x 96 (cells twice as wide as tall), then both
+  // ways to 5 x 6
+  EXPECT_FALSE(cli::twod_grid_cost_warning(160, 96, 1.0).has_value());
+  // 130 x 96 on square cells halves along x once, to 65 x 96 = 6 240 cells: named
+  EXPECT_TRUE(cli::twod_grid_cost_warning(130, 96, 1.0).has_value());
 }

@@ -13,8 +13,8 @@
 //                varies fast in z, and the zebra order the error that varies fast in x; on
 //                nearly square cells the full coarsening's coarse operators then average the
 //                surface's density jump over two rows, and the cycle converges about half as
-//                fast (160 x 16 cells, dx = dz: 16.4 projection iterations per step with full
-//                coarsening, 8.0 with x alone first; docs/performance.md, thirtieth session).
+//                fast (160 x 16 cells, dx / dz = 0.94: 16.4 projection iterations per step with
+//                full coarsening, 7.3 with x alone first; docs/performance.md, thirtieth session).
 //   transfer     piecewise-constant prolongation P, restriction R = P^T (sum of the 2 x 2 cells,
 //                or of the 2 x 1 cells after coarsening in x alone).
 //   coarse op.   face coefficients of the rediscretisation for constant beta: a coarse face
@@ -142,7 +142,7 @@ void PressureMultigrid::rebuild() {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
-    const bool x_alone = C.nz == F.nz;
+    const bool x_alone = C.nz == F.nz;  // (full coarsening halves nz)
     parallel_for(C.nx, F.nx * F.nz >= kParallelCells, [&](int i) {
       if (x_alone) {
         for (int k = 0; k < C.nz; ++k) C.cx[C.cell(i, k)] = 0.5 * F.cx[F.cell(2 * i, k)];

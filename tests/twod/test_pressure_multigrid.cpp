@@ -153,7 +153,7 @@ TEST(PressureMultigrid, OneCycleAsAStationaryIterationReducesTheErrorFivefold) {
 // On square cells the levels are halved along x alone until the cells are twice as wide as tall:
 // the full coarsening's coarse operators would average the surface's density jump over two rows.
 // Against full coarsening of the same operator (told the cells are wide), the conjugate gradients
-// need at most three quarters of the iterations: 10 against 20 here, 8.0 against 16.4 per step
+// need at most three quarters of the iterations: 10 against 20 here, 7.3 against 16.4 per step
 // on 160 x 16 in the solver (pressure_multigrid.cpp).
 TEST(PressureMultigrid, SquareCellsCoarsenedAlongXAloneFirstConvergeFaster) {
   for (const double rho_light : {0.015, 1.5e-3}) {

@@ -75,11 +75,11 @@ void PoissonLevel::factorise() {
   });
 }
 
+namespace {
+
 bool can_halve(int nx, int nz) {
   return nx % 2 == 0 && nz % 2 == 0 && nz >= 4 && nx >= 4 && nx * nz > 64;
 }
-
-namespace {
 
 bool can_halve_x(int nx, int nz) {
   return nx % 2 == 0 && nx >= 4 && nx * nz > 64;

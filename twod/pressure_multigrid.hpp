@@ -29,7 +29,6 @@ struct PoissonLevel {
 // (an odd count on a large grid), at several times the cost of a step.
 inline constexpr int kDirectCoarsestCells = 2048;
 inline constexpr double kCoarsenXAloneBelowAspect = 2.0;
-bool can_halve(int nx, int nz);
 // (nx, nz) of the coarsest level for a fine grid of cells dx / dz = aspect
 std::pair<int, int> coarsest_level(int nx, int nz, double aspect);
 

@@ -107,6 +107,22 @@ void refuse_options_of_other_model(const CLI::App& app, const std::vector<std::s
       throw UsageError(name + ": applies to --model " + owner + " only");
 }
 
+// Without --nx or --nz (on the command line or in a --config file) the 2D model takes the grid
+// that compare and sweep give this wave: along x the preset's 160 cells per 8 cm, at least 160,
+// a multiple of 16 (TwodSettings::cells_along; 256 stays the depth-averaged default); across
+// the layer 64 cells, more for a wave under 7.5 h0 (cells_across). The options' shown defaults
+// become those values.
+void set_twod_grid_defaults(CLI::App& sub, RunOptions& run, TwodSettings& settings) {
+  if (sub.count("--nx") == 0) {
+    run.nx = std::size_t(settings.cells_along(run.Lx));
+    sub.get_option("--nx")->default_str(std::to_string(run.nx));
+  }
+  if (sub.count("--nz") == 0) {
+    settings.nz = settings.cells_across(run.Lx / run.mode, run.flow.h0);
+    sub.get_option("--nz")->default_str(std::to_string(settings.nz));
+  }
+}
+
 }  // namespace
 
 void add_run_command(CLI::App& app) {
@@ -127,12 +143,13 @@ void add_run_command(CLI::App& app) {
        "granbench run --model twod --init eigenmode --a0 2e-5 --t-end 2 --out run.h5 --json",
        "granbench run --model twod --restart run.checkpoint.h5 --t-end 10 --out run.h5"},
       {0, 2, 3, 130, 143}));
+  // The 2D grid's defaults depend on the length and the mode, so they are set once the options
+  // are parsed, and shown so: --print-config and the run read the same values (the callback
+  // below is not called under --print-config).
+  sub->parse_complete_callback([sub, run, twod] {
+    if (parse_model(run->model) == Model::TwoD) set_twod_grid_defaults(*sub, *run, twod->settings);
+  });
   sub->callback([sub, run, depthavg, twod, depthavg_only, twod_only] {
-    // Without --nx (on the command line or in a --config file), the 2D model takes the cells
-    // along x that compare and sweep give this length: the preset's 160 per 8 cm, at least 160,
-    // a multiple of 16 (TwodSettings::cells_along). 256 stays the depth-averaged default.
-    if (parse_model(run->model) == Model::TwoD && sub->count("--nx") == 0)
-      run->nx = std::size_t(twod->settings.cells_along(run->Lx));
     check_run_options(*run);
     if (parse_model(run->model) == Model::TwoD)
       refuse_options_of_other_model(*sub, depthavg_only, "depthavg");
@@ -143,10 +160,6 @@ void add_run_command(CLI::App& app) {
         run_depthavg(*run, *depthavg);
         break;
       case Model::TwoD:
-        // Without --nz (on the command line or in a --config file), the cells across the layer
-        // that compare and sweep give the seeded wave: 64, more for a wave under 7.5 h0.
-        if (sub->count("--nz") == 0)
-          twod->settings.nz = twod->settings.cells_across(run->Lx / run->mode, run->flow.h0);
         run_twod(*run, *twod);
         break;
     }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -54,6 +55,32 @@ TEST_F(ShortWaveGrid, RunTakesComparesCellsAlongUnlessNxIsGiven) {
   EXPECT_EQ(recorded_cells(run + "--Lx 0.1", "nx"), 208.0);  // 200 cells of 0.5 mm, rounded up
   EXPECT_EQ(recorded_cells(run + "--Lx 0.02 --nx 48", "nx"), 48.0);
   EXPECT_EQ(recorded_cells("run --model depthavg --t-end 1e-3 --Lx 0.02", "nx"), 256.0);
+}
+
+// --print-config shows the 2D grid that run takes (160 x 96 for the 2 cm wave, not the option's
+// registered 256 and 64), commented out as defaults are, and a file written from it runs on that
+// grid; the depth-averaged model's 256 is shown as before.
+TEST_F(ShortWaveGrid, PrintConfigShowsTheGridRunTakes) {
+  const auto shown = run_granbench("run --model twod --Lx 0.02 --print-config", "short_wave");
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  EXPECT_NE(shown.out.find("\n# nx = 160\n"), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find("\n# nz = 96\n"), std::string::npos) << shown.out;
+  const auto given =
+      run_granbench("run --model twod --Lx 0.02 --nz 80 --print-config", "short_wave");
+  ASSERT_EQ(given.code, 0) << given.err;
+  EXPECT_NE(given.out.find("\nnz = 80\n"), std::string::npos) << given.out;
+  const auto depthavg = run_granbench("run --Lx 0.02 --print-config", "short_wave");
+  ASSERT_EQ(depthavg.code, 0) << depthavg.err;
+  EXPECT_NE(depthavg.out.find("\n# nx = 256\n"), std::string::npos) << depthavg.out;
+
+  const fs::path config = dir_ / "run.toml";
+  { std::ofstream(config) << shown.out; }
+  EXPECT_EQ(recorded_cells("run --config " + config.string() + " --t-end 1e-4 --checkpoint-every 0",
+                           "nz"),
+            96.0);
+  EXPECT_EQ(recorded_cells("run --config " + config.string() + " --t-end 1e-4 --checkpoint-every 0",
+                           "nx"),
+            160.0);
 }
 
 // Near the cutoff the refined grid is not enough: `run` says so, in its JSON and on stderr, for

@@ -85,24 +85,26 @@ bool can_halve_x(int nx, int nz) {
   return nx % 2 == 0 && nx >= 4 && nx * nz > 64;
 }
 
-// The next coarser level's counts and aspect, or false at the coarsest.
-bool coarsen(int& nx, int& nz, double& aspect) {
+enum class Halving { None, XAlone, Both };
+
+// The next coarser level's counts and aspect, and how they were halved (None at the coarsest).
+Halving coarsen(int& nx, int& nz, double& aspect) {
   if (aspect < kCoarsenXAloneBelowAspect) {
-    if (!can_halve_x(nx, nz)) return false;
+    if (!can_halve_x(nx, nz)) return Halving::None;
     nx /= 2;
     aspect *= 2.0;
-    return true;
+    return Halving::XAlone;
   }
-  if (!can_halve(nx, nz)) return false;
+  if (!can_halve(nx, nz)) return Halving::None;
   nx /= 2;
   nz /= 2;
-  return true;
+  return Halving::Both;
 }
 
 }  // namespace
 
 std::pair<int, int> coarsest_level(int nx, int nz, double aspect) {
-  while (coarsen(nx, nz, aspect)) {
+  while (coarsen(nx, nz, aspect) != Halving::None) {
   }
   return {nx, nz};
 }
@@ -124,10 +126,13 @@ PoissonLevel& PressureMultigrid::fine_operator(int nx, int nz, double aspect) {
     fine.cx.assign(std::size_t(nx) * nz, 0.0);
     fine.cz.assign(std::size_t(nx) * (nz + 1), 0.0);
     levels_.assign(1, fine);
-    for (int cx = nx, cz = nz; coarsen(cx, cz, aspect);) {
+    for (int cx = nx, cz = nz;;) {
+      const Halving halving = coarsen(cx, cz, aspect);
+      if (halving == Halving::None) break;
       PoissonLevel C;
       C.nx = cx;
       C.nz = cz;
+      C.halved_x_alone = halving == Halving::XAlone;
       C.cx.assign(C.nx * C.nz, 0.0);
       C.cz.assign(C.nx * (C.nz + 1), 0.0);
       levels_.push_back(C);
@@ -142,7 +147,7 @@ void PressureMultigrid::rebuild() {
   for (std::size_t l = 1; l < levels_.size(); ++l) {
     const PoissonLevel& F = levels_[l - 1];
     PoissonLevel& C = levels_[l];
-    const bool x_alone = C.nz == F.nz;  // (full coarsening halves nz)
+    const bool x_alone = C.halved_x_alone;
     parallel_for(C.nx, F.nx * F.nz >= kParallelCells, [&](int i) {
       if (x_alone) {
         for (int k = 0; k < C.nz; ++k) C.cx[C.cell(i, k)] = 0.5 * F.cx[F.cell(2 * i, k)];
@@ -279,7 +284,7 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   // the even column's are non-zero; this replaces the residual's full product and its second pass.
   x.resize(L.nx * L.nz);
   line_sweep(L, b, x, true, true);
-  const bool x_alone = C.nz == L.nz;
+  const bool x_alone = C.halved_x_alone;
   parallel_for(C.nx, parallel, [&](int ic) {
     const int i = 2 * ic, il = i == 0 ? L.nx - 1 : i - 1, ir = i + 1;
     const double* cl = &L.cx[L.cell(i, 0)];

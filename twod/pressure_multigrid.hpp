@@ -13,8 +13,9 @@ namespace granbench::twod {
 // Stored column by column (cell (i, k) at i nz + k) so that the z-lines are contiguous.
 struct PoissonLevel {
   int nx = 0, nz = 0;
-  std::vector<double> cx;  // x-face coefficients, face left of cell (i, k) at i nz + k
-  std::vector<double> cz;  // z-face coefficients at i (nz + 1) + k, k = 0 (bed) .. nz (top)
+  bool halved_x_alone = false;  // a coarse level made from the finer one by halving nx alone
+  std::vector<double> cx;       // x-face coefficients, face left of cell (i, k) at i nz + k
+  std::vector<double> cz;       // z-face coefficients at i (nz + 1) + k, k = 0 (bed) .. nz (top)
   int cell(int i, int k) const { return i * nz + k; }
   int zface(int i, int k) const { return i * (nz + 1) + k; }
   std::vector<double> cp, inv_m;  // Thomas factors of the column blocks (set by factorise())

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "analysis/cli/physics_warnings.hpp"
@@ -29,6 +30,12 @@ TEST(PhysicsWarnings, IllPosedBaseStateAndCoarseGridAreNamed) {
   const auto coarse = cli::twod_warnings(good, 4e-3 / 16.0, 0.08);
   ASSERT_EQ(coarse.size(), 1u);
   EXPECT_NE(coarse[0].find("16 cells per h0"), std::string::npos) << coarse[0];
+  // with what the measured law expects of this wave, the same figure as the growth-law warning
+  char deficit[64];
+  std::snprintf(deficit, sizeof deficit, "about %.2g 1/s under",
+                cli::expected_twod_growth_deficit(good, 4e-3 / 16.0, 0.08));
+  EXPECT_NE(coarse[0].find(deficit), std::string::npos) << coarse[0];
+  EXPECT_NE(coarse[0].find("this wave (20 h0)"), std::string::npos) << coarse[0];
 
   // Jop's curve is ill posed at high inertial number (§3): the steepest slope it allows.
   const SteadyState steep = section7(CurveKind::Jop, 29.0);

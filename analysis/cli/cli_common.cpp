@@ -17,19 +17,21 @@ namespace granbench::cli {
 namespace {
 std::string fmt(double v) {
   std::ostringstream s;
+  s.precision(12);  // whole bounds such as 1048576 in full
   s << v;
   return s.str();
 }
 }  // namespace
 
-CLI::Validator positive() {
-  return open_range(0.0, std::numeric_limits<double>::infinity());
-}
-
-CLI::Validator open_range(double lo, double hi) {
-  const std::string range = "(" + fmt(lo) + ", " + fmt(hi) + ")";
+namespace {
+// v in the interval from lo to hi, each end included or not; the message names the interval as
+// the help does: [lo, hi], (lo, hi) or [lo, hi).
+CLI::Validator interval(double lo, double hi, bool lo_included, bool hi_included,
+                        const std::string& name) {
+  const std::string range =
+      (lo_included ? "[" : "(") + fmt(lo) + ", " + fmt(hi) + (hi_included ? "]" : ")");
   return CLI::Validator(
-      [lo, hi, range](std::string& text) -> std::string {
+      [=](std::string& text) -> std::string {
         double v = 0.0;
         try {
           std::size_t used = 0;
@@ -38,10 +40,29 @@ CLI::Validator open_range(double lo, double hi) {
         } catch (const std::exception&) {
           return "'" + text + "' is not a number; valid range " + range;
         }
-        if (!(v > lo && v < hi)) return "value " + text + " out of range; valid range " + range;
+        const bool above = lo_included ? v >= lo : v > lo;
+        const bool below = hi_included ? v <= hi : v < hi;
+        if (!(above && below)) return "value " + text + " out of range; valid range " + range;
         return {};
       },
-      "in " + range, "open_range");
+      "in " + range, name);
+}
+}  // namespace
+
+CLI::Validator positive() {
+  return open_range(0.0, std::numeric_limits<double>::infinity());
+}
+
+CLI::Validator open_range(double lo, double hi) {
+  return interval(lo, hi, false, false, "open_range");
+}
+
+CLI::Validator closed_range(double lo, double hi) {
+  return interval(lo, hi, true, true, "closed_range");
+}
+
+CLI::Validator half_open_range(double lo, double hi) {
+  return interval(lo, hi, true, false, "half_open_range");
 }
 
 CLI::Validator one_of(const std::vector<std::string>& values) {

@@ -25,6 +25,8 @@ struct UsageError : std::runtime_error {
 // Validators whose messages name the valid range.
 CLI::Validator positive();                                      // (0, inf)
 CLI::Validator open_range(double lo, double hi);                // (lo, hi)
+CLI::Validator closed_range(double lo, double hi);              // [lo, hi]
+CLI::Validator half_open_range(double lo, double hi);           // [lo, hi)
 CLI::Validator one_of(const std::vector<std::string>& values);  // {a,b,...}
 
 // Options shared by wellposed/steady/dispersion/run/sweep/compare.

@@ -27,14 +27,14 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
       ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
   sub.add_option("--nx", o.nx, "2D cells along x (overrides --resolution), in [8, 65536]")
-      ->check(CLI::Range(8, 65536));
+      ->check(closed_range(8, 65536));
   sub.add_option("--nz", o.nz,
                  "2D cells across Lz ~ 2 h0 (overrides --resolution and its refinement for short "
                  "waves), in [4, 4096]")
-      ->check(CLI::Range(4, 4096));
+      ->check(closed_range(4, 4096));
   sub.add_option("--nx-depthavg", o.nx_depthavg,
                  "depth-averaged cells (overrides --resolution), in [8, 1048576]")
-      ->check(CLI::Range(std::size_t{8}, std::size_t{1} << 20));
+      ->check(closed_range(8, 1 << 20));
   sub.add_option("--frame-speed", o.frame_speed,
                  "depth-averaged model's frame {linear,0}: moving at the (7.11) phase speed, or "
                  "the lab frame; output is in the lab frame")
@@ -43,12 +43,12 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
   sub.add_option("--twod-frame", o.twod_frame,
                  "2D grid's speed as a fraction of the steady surface speed, in [0, 1]; 0.5 about "
                  "halves the steps, 0 is the lab frame; output is in the lab frame either way")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(closed_range(0.0, 1.0))
       ->capture_default_str();
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
                  "(1 is second order in time already; more passes cost n times as much)")
-      ->check(CLI::Range(1, 4))
+      ->check(closed_range(1, 4))
       ->capture_default_str();
 }
 

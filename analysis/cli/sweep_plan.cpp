@@ -67,10 +67,10 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
   sub.add_option("--Lx", o.Lx, "domain lengths A:B:N [m] (N evenly spaced from A to B)")
       ->capture_default_str();
   sub.add_option("--jobs", o.jobs, "parallel threads per process, in [1, 256]")
-      ->check(CLI::Range(1u, 256u))
+      ->check(closed_range(1, 256))
       ->capture_default_str();
   sub.add_option("--nx", o.nx, "cells per domain (--model depthavg), in [16, 65536]")
-      ->check(CLI::Range(std::size_t{16}, std::size_t{65536}))
+      ->check(closed_range(16, 65536))
       ->capture_default_str();
   sub.add_option("--seed-tolerance", o.tolerance,
                  "CVODE tolerance relative to the seeded perturbation (amplitude 1e-4 h0) "
@@ -90,11 +90,11 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
                  "2D grid (--model twod|both)'s speed as a fraction of the steady surface speed, "
                  "in [0, 1]; 0.5 about "
                  "halves the steps, 0 is the lab frame; output is in the lab frame either way")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(closed_range(0.0, 1.0))
       ->capture_default_str();
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
-      ->check(CLI::Range(1, 4))
+      ->check(closed_range(1, 4))
       ->capture_default_str();
   add_depthavg_options(sub, o.depthavg);
   add_output_options(sub, o.output);

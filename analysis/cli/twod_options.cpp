@@ -23,7 +23,7 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.settings.nz,
                  "twod: cells along z, in [4, 4096]; default 64, and for a wave (Lx / mode) under "
                  "7.5 h0 up to twice that, as compare and sweep")
-      ->check(CLI::Range(4, 4096))
+      ->check(closed_range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,
                  "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
@@ -60,14 +60,14 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
                  "twod: speed of the computational grid as a fraction of the steady surface "
                  "speed, in [0, 1]; 0.5 about halves the steps, 0 is the lab frame; output is in "
                  "the lab frame either way")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(closed_range(0.0, 1.0))
       ->capture_default_str();
   app.add_option(
          "--viscosity-passes", o.settings.viscosity_passes,
          "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
          "(1: one solve, second order in time through the stress tangent; more passes "
          "cost n times as much, docs/twod-validation.md)")
-      ->check(CLI::Range(1, 4))
+      ->check(closed_range(1, 4))
       ->capture_default_str();
   app.add_option("--dt-max", o.settings.dt_max, "twod: largest time step [s], > 0")
       ->check(positive())

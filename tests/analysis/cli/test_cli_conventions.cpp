@@ -54,6 +54,20 @@ TEST(CliConventions, FrictionCoefficientsAreChecked) {
   expect_refused("steady --mu-inf nan", "--mu-inf", {"valid range"});
 }
 
+// Counts and fractions bounded on both sides say so in the words of every other option (they
+// said CLI11's "Value 3 not in range 4 to 4096"), with whole bounds in full; --mode names nx/2.
+TEST(CliConventions, BoundedOptionsNameTheirIntervals) {
+  expect_refused("run --model twod --nz 3", "--nz: value 3 out of range",
+                 {"valid range [4, 4096]"});
+  expect_refused("run --nx 7", "--nx: value 7 out of range", {"valid range [8, 1048576]"});
+  expect_refused("compare --nx 70000", "--nx: value 70000 out of range", {"[8, 65536]"});
+  expect_refused("run --noise 0.5", "--noise: value 0.5 out of range", {"valid range [0, 0.5)"});
+  expect_refused("sweep --jobs 0", "--jobs: value 0 out of range", {"valid range [1, 256]"});
+  expect_refused("run --model twod --twod-frame 1.5", "--twod-frame:", {"valid range [0, 1]"});
+  expect_refused("run --model twod --nz abc", "--nz: 'abc' is not a number", {"[4, 4096]"});
+  expect_refused("run --mode 0", "--mode: 0 out of range", {"valid range [1, nx/2]"});
+}
+
 TEST(CliConventions, SweepOptionsThatDoNotApplyToTheModelAreRefused) {
   const std::string sweep = "sweep --Lx 0.08:0.08:1 --jobs 1 ";
   expect_refused(sweep + "--model twod --nx 64", "--nx: does not apply to --model twod");

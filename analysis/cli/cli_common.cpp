@@ -57,6 +57,10 @@ CLI::Validator open_range(double lo, double hi) {
   return interval(lo, hi, false, false, "open_range");
 }
 
+CLI::Validator non_negative() {
+  return half_open_range(0.0, std::numeric_limits<double>::infinity());
+}
+
 CLI::Validator closed_range(double lo, double hi) {
   return interval(lo, hi, true, true, "closed_range");
 }

@@ -24,6 +24,7 @@ struct UsageError : std::runtime_error {
 
 // Validators whose messages name the valid range.
 CLI::Validator positive();                                      // (0, inf)
+CLI::Validator non_negative();                                  // [0, inf)
 CLI::Validator open_range(double lo, double hi);                // (lo, hi)
 CLI::Validator closed_range(double lo, double hi);              // [lo, hi]
 CLI::Validator half_open_range(double lo, double hi);           // [lo, hi)

@@ -44,7 +44,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
       ->check(closed_range(8, 1 << 20))
       ->capture_default_str();
   app.add_option("--a0", o.a0, "perturbation amplitude a0 [m] of (7.2), in [0, h0)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   app.add_option("--mode", o.mode, "wavelengths of the perturbation in the domain, in [1, nx/2]")
       ->capture_default_str();

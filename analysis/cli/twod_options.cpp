@@ -87,7 +87,7 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
                  "twod: simulated time between checkpoints [s], >= 0 (0: only on SIGINT/SIGTERM); "
                  "the output file is brought up to date at each one, so a killed run restarts "
                  "from the last with --restart into the same --out")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative())
       ->capture_default_str();
   app.add_option("--restart", o.restart,
                  "twod: continue from this checkpoint file (same physics and grid; into the same "

@@ -24,12 +24,13 @@ std::string fmt(double v) {
 }  // namespace
 
 namespace {
-// v in the interval from lo to hi, each end included or not; the message names the interval as
-// the help does: [lo, hi], (lo, hi) or [lo, hi).
+// v in the interval from lo to hi, each end included or not, and a whole number if `whole`; the
+// message names the interval as the help does ([lo, hi], (lo, hi) or [lo, hi)), or `shown`.
 CLI::Validator interval(double lo, double hi, bool lo_included, bool hi_included,
-                        const std::string& name) {
-  const std::string range =
-      (lo_included ? "[" : "(") + fmt(lo) + ", " + fmt(hi) + (hi_included ? "]" : ")");
+                        const std::string& name, bool whole = false, std::string shown = "") {
+  const std::string range = !shown.empty() ? shown
+                                           : (lo_included ? "[" : "(") + fmt(lo) + ", " + fmt(hi) +
+                                                 (hi_included ? "]" : ")");
   return CLI::Validator(
       [=](std::string& text) -> std::string {
         double v = 0.0;
@@ -40,6 +41,8 @@ CLI::Validator interval(double lo, double hi, bool lo_included, bool hi_included
         } catch (const std::exception&) {
           return "'" + text + "' is not a number; valid range " + range;
         }
+        if (whole && v != std::floor(v))
+          return "'" + text + "' is not a whole number; valid range " + range;
         const bool above = lo_included ? v >= lo : v > lo;
         const bool below = hi_included ? v <= hi : v < hi;
         if (!(above && below)) return "value " + text + " out of range; valid range " + range;
@@ -63,6 +66,10 @@ CLI::Validator non_negative() {
 
 CLI::Validator closed_range(double lo, double hi) {
   return interval(lo, hi, true, true, "closed_range");
+}
+
+CLI::Validator count_range(long lo, long hi, const std::string& shown) {
+  return interval(double(lo), double(hi), true, true, "count_range", true, shown);
 }
 
 CLI::Validator half_open_range(double lo, double hi) {

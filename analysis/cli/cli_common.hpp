@@ -23,11 +23,14 @@ struct UsageError : std::runtime_error {
 };
 
 // Validators whose messages name the valid range.
-CLI::Validator positive();                                      // (0, inf)
-CLI::Validator non_negative();                                  // [0, inf)
-CLI::Validator open_range(double lo, double hi);                // (lo, hi)
-CLI::Validator closed_range(double lo, double hi);              // [lo, hi]
-CLI::Validator half_open_range(double lo, double hi);           // [lo, hi)
+CLI::Validator positive();                             // (0, inf)
+CLI::Validator non_negative();                         // [0, inf)
+CLI::Validator open_range(double lo, double hi);       // (lo, hi)
+CLI::Validator closed_range(double lo, double hi);     // [lo, hi]
+CLI::Validator half_open_range(double lo, double hi);  // [lo, hi)
+// A whole number in [lo, hi]; the message shows `shown` instead when given (a bound that
+// depends on another option, as [1, nx/2]).
+CLI::Validator count_range(long lo, long hi, const std::string& shown = "");
 CLI::Validator one_of(const std::vector<std::string>& values);  // {a,b,...}
 
 // Options shared by wellposed/steady/dispersion/run/sweep/compare.

@@ -103,7 +103,7 @@ void add_case_command(CLI::App& app) {
   sub->add_option("--cases-dir", o->cases_dir, "directory of the case files")
       ->capture_default_str();
   sub->add_option("--jobs", o->jobs, "runs of a case computed at once, in [1, 256]")
-      ->check(closed_range(1, 256))
+      ->check(count_range(1, 256))
       ->capture_default_str();
   sub->add_flag("--json", o->output.json, "print the results as JSON");
   sub->add_flag("--quiet", o->output.quiet, "no progress on stderr");

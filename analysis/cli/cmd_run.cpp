@@ -41,12 +41,13 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--nx", o.nx,
                  "cells along x, in [8, 1048576]; --model twod: by default 160 per 8 cm as in "
                  "compare (at least 160, a multiple of 16)")
-      ->check(closed_range(8, 1 << 20))
+      ->check(count_range(8, 1 << 20))
       ->capture_default_str();
   app.add_option("--a0", o.a0, "perturbation amplitude a0 [m] of (7.2), in [0, h0)")
       ->check(non_negative())
       ->capture_default_str();
   app.add_option("--mode", o.mode, "wavelengths of the perturbation in the domain, in [1, nx/2]")
+      ->check(count_range(1, 1 << 19, "[1, nx/2]"))  // (nx/2 checked with nx: check_run_options)
       ->capture_default_str();
   app.add_option("--init", o.init,
                  "initial state {sine,eigenmode}: (7.2) or the normal mode (7.10)")
@@ -71,7 +72,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
   app.add_option("--bdf-order", o.bdf_order,
                  "CVODE BDF order limit (depthavg), in [1, 5]; default: 2 in a co-moving frame, 5 "
                  "in the lab frame (depthavg/params.hpp)")
-      ->check(closed_range(1, 5));
+      ->check(count_range(1, 5));
   add_output_options(app, o.output, false);
   add_threads_option(app);
 }
@@ -80,7 +81,8 @@ void check_run_options(const RunOptions& o) {
   if (!(o.a0 < o.flow.h0))
     throw UsageError("--a0: " + std::to_string(o.a0) + " out of range; valid range [0, h0)");
   if (o.mode < 1 || static_cast<std::size_t>(o.mode) > o.nx / 2)
-    throw UsageError("--mode: " + std::to_string(o.mode) + " out of range; valid range [1, nx/2]");
+    throw UsageError("--mode: value " + std::to_string(o.mode) +
+                     " out of range; valid range [1, nx/2] (nx = " + std::to_string(o.nx) + ")");
 }
 
 namespace {

@@ -27,14 +27,14 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
       ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.
   sub.add_option("--nx", o.nx, "2D cells along x (overrides --resolution), in [8, 65536]")
-      ->check(closed_range(8, 65536));
+      ->check(count_range(8, 65536));
   sub.add_option("--nz", o.nz,
                  "2D cells across Lz ~ 2 h0 (overrides --resolution and its refinement for short "
                  "waves), in [4, 4096]")
-      ->check(closed_range(4, 4096));
+      ->check(count_range(4, 4096));
   sub.add_option("--nx-depthavg", o.nx_depthavg,
                  "depth-averaged cells (overrides --resolution), in [8, 1048576]")
-      ->check(closed_range(8, 1 << 20));
+      ->check(count_range(8, 1 << 20));
   sub.add_option("--frame-speed", o.frame_speed,
                  "depth-averaged model's frame {linear,0}: moving at the (7.11) phase speed, or "
                  "the lab frame; output is in the lab frame")
@@ -48,7 +48,7 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step, eta from the previous pass, in [1, 4] "
                  "(1 is second order in time already; more passes cost n times as much)")
-      ->check(closed_range(1, 4))
+      ->check(count_range(1, 4))
       ->capture_default_str();
 }
 

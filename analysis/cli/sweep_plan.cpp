@@ -67,10 +67,10 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
   sub.add_option("--Lx", o.Lx, "domain lengths A:B:N [m] (N evenly spaced from A to B)")
       ->capture_default_str();
   sub.add_option("--jobs", o.jobs, "parallel threads per process, in [1, 256]")
-      ->check(closed_range(1, 256))
+      ->check(count_range(1, 256))
       ->capture_default_str();
   sub.add_option("--nx", o.nx, "cells per domain (--model depthavg), in [16, 65536]")
-      ->check(closed_range(16, 65536))
+      ->check(count_range(16, 65536))
       ->capture_default_str();
   sub.add_option("--seed-tolerance", o.tolerance,
                  "CVODE tolerance relative to the seeded perturbation (amplitude 1e-4 h0) "
@@ -94,7 +94,7 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
       ->capture_default_str();
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
-      ->check(closed_range(1, 4))
+      ->check(count_range(1, 4))
       ->capture_default_str();
   add_depthavg_options(sub, o.depthavg);
   add_output_options(sub, o.output);

@@ -23,7 +23,7 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.settings.nz,
                  "twod: cells along z, in [4, 4096]; default 64, and for a wave (Lx / mode) under "
                  "7.5 h0 up to twice that, as compare and sweep")
-      ->check(closed_range(4, 4096))
+      ->check(count_range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,
                  "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
@@ -67,7 +67,7 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
          "twod: predictor-projection passes per step, eta from the previous pass, in [1, 4] "
          "(1: one solve, second order in time through the stress tangent; more passes "
          "cost n times as much, docs/twod-validation.md)")
-      ->check(closed_range(1, 4))
+      ->check(count_range(1, 4))
       ->capture_default_str();
   app.add_option("--dt-max", o.settings.dt_max, "twod: largest time step [s], > 0")
       ->check(positive())

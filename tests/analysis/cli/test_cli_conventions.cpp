@@ -65,7 +65,10 @@ TEST(CliConventions, BoundedOptionsNameTheirIntervals) {
   expect_refused("sweep --jobs 0", "--jobs: value 0 out of range", {"valid range [1, 256]"});
   expect_refused("run --model twod --twod-frame 1.5", "--twod-frame:", {"valid range [0, 1]"});
   expect_refused("run --model twod --nz abc", "--nz: 'abc' is not a number", {"[4, 4096]"});
-  expect_refused("run --mode 0", "--mode: 0 out of range", {"valid range [1, nx/2]"});
+  expect_refused("run --mode 0", "--mode: value 0 out of range", {"valid range [1, nx/2]"});
+  expect_refused("run --mode 200", "--mode: value 200 out of range", {"[1, nx/2] (nx = 256)"});
+  expect_refused("run --mode 2.5", "--mode: '2.5' is not a whole number", {"[1, nx/2]"});
+  expect_refused("run --model twod --nz 40.5", "--nz: '40.5' is not a whole number", {"[4, 4096]"});
   // (CLI11's own check printed the largest double in full)
   expect_refused("run --a0 -1", "--a0: value -1 out of range", {"valid range [0, inf)"});
   expect_refused("run --model twod --checkpoint-every -1", "--checkpoint-every:", {"[0, inf)"});

@@ -99,7 +99,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
                      std::to_string(2.0 * std::numbers::pi * chute.h0 / chute.Lx) + " (" +
                      e.what() + "); choose another --Lx or --h0");
   }
-  if (auto w = twod_growth_accuracy_warning(c.base, dz, chute.Lx, c.theory.exact_2d.growth_rate))
+  if (auto w = twod_growth_accuracy_warning(c.base, dz, chute.Lx, c.theory.exact_2d.growth_rate,
+                                            twod.domain_height(chute.h0)))
     warnings.push_back(*w);
   print_warnings(warnings);  // once every check has passed
   // Both models at once (run_both shares the cores).

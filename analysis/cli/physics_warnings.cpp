@@ -60,7 +60,8 @@ double expected_twod_growth_deficit(const SteadyState& base, double dz, double w
 }
 
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
-                                                        double wavelength, double exact_growth) {
+                                                        double wavelength, double exact_growth,
+                                                        double domain_height) {
   constexpr double kTolerated = 0.10, kAimed = 0.05;
   if (!(exact_growth > 0.0)) return std::nullopt;  // no growth to measure
   const double deficit = expected_twod_growth_deficit(base, dz, wavelength);
@@ -68,14 +69,15 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
   // The dz at which the law gives kAimed of the growth: the deficit scales as dz^1.4.
   const double dz_aimed = dz * std::pow(kAimed * exact_growth / deficit, 1.0 / kGrowthDeficitOrder);
   char buf[640];
-  std::snprintf(buf, sizeof buf,
-                "a small growth rate: the exact 2D theory gives %.3g 1/s, and on %.3g cells per "
-                "h0 the 2D model is expected about %.2g 1/s (%.0f %%) under it at a wave of %.3g "
-                "h0 (the measured law %.2g sqrt(g/h0) (k dz)^%.2g, docs/twod-validation.md §3); "
-                "about %.0f cells per h0 would bring that to %.0f %%",
-                exact_growth, base.h0 / dz, deficit, 100.0 * deficit / exact_growth,
-                wavelength / base.h0, kGrowthDeficitCoefficient, kGrowthDeficitOrder,
-                base.h0 / dz_aimed, 100.0 * kAimed);
+  std::snprintf(
+      buf, sizeof buf,
+      "a small growth rate: the exact 2D theory gives %.3g 1/s, and on %.3g cells per "
+      "h0 the 2D model is expected about %.2g 1/s (%.0f %%) under it at a wave of %.3g "
+      "h0 (the measured law %.2g sqrt(g/h0) (k dz)^%.2g, docs/twod-validation.md §3); "
+      "about %.0f cells per h0 (--nz %d in run or compare) would bring that to %.0f %%",
+      exact_growth, base.h0 / dz, deficit, 100.0 * deficit / exact_growth, wavelength / base.h0,
+      kGrowthDeficitCoefficient, kGrowthDeficitOrder, base.h0 / dz_aimed,
+      TwodSettings::multiple_of_16(int(std::ceil(domain_height / dz_aimed))), 100.0 * kAimed);
   return std::string(buf);
 }
 

@@ -38,9 +38,11 @@ double expected_twod_growth_deficit(const SteadyState& base, double dz, double w
 
 // When that deficit is more than 10 % of a positive exact 2D growth rate (a wave near the 2D
 // cutoff, or a coarse grid), a warning with the growth, the expected deficit and the cells per h0
-// that would bring it to 5 %; nothing otherwise.
+// that would bring it to 5 %, as the --nz that gives them on a domain of this height (a multiple
+// of 16, as the default grids); nothing otherwise.
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
-                                                        double wavelength, double exact_growth);
+                                                        double wavelength, double exact_growth,
+                                                        double domain_height);
 
 // When the pressure multigrid cannot coarsen an nx x nz grid of cells dx / dz = aspect to one it
 // solves directly (an odd count, twod/pressure_multigrid.hpp), a warning that each step will

@@ -106,7 +106,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   const SeededTheory seeded =
       eigenmode ? SeededTheory{eigenmode->growth_rate(), eigenmode->phase_speed()} : SeededTheory{};
   if (eigenmode)
-    if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate()))
+    if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate(),
+                                              grid.Lz))
       warnings.push_back(*w);
   Solver solver(grid, params,
                 restart ? restart->state

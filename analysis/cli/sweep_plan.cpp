@@ -183,7 +183,8 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
       continue;  // no surface mode: the point reports that itself
     }
     const double dz = point.domain_height(o.flow.h0) / point.nz;
-    if (auto w = twod_growth_accuracy_warning(base, dz, Lx, growth)) {
+    if (auto w =
+            twod_growth_accuracy_warning(base, dz, Lx, growth, point.domain_height(o.flow.h0))) {
       std::ostringstream named;
       named << "Lx = " << Lx << " m: " << *w;
       plan.warnings.push_back(named.str());

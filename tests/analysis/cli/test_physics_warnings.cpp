@@ -73,7 +73,8 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
   EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / 32.0, 0.02) /
                   cli::expected_twod_growth_deficit(good, h0 / 64.0, 0.02),
               std::pow(2.0, 1.4), 1e-12);
-  const auto near_cutoff = cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.015, 0.26657);
+  const auto near_cutoff =
+      cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.015, 0.26657, 2.03 * h0);
   ASSERT_TRUE(near_cutoff.has_value());
   EXPECT_NE(near_cutoff->find("0.267 1/s"), std::string::npos) << *near_cutoff;
   EXPECT_NE(near_cutoff->find("(19 %)"), std::string::npos) << *near_cutoff;
@@ -81,10 +82,15 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
   const double aimed = std::stod(near_cutoff->substr(near_cutoff->rfind("about ") + 6));
   // (printed as a whole number: 0.5 in 168 moves the law by 0.4 %, 2e-4 of the 5 %)
   EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / aimed, 0.015) / 0.26657, 0.05, 2.5e-4);
-  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 47.5, 0.02, 0.82001).has_value());
-  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 15.5, 0.08, 1.0891).has_value());
+  // and the --nz that puts them across this domain (2.03 h0 x 168 = 341 cells, rounded up to 352)
+  EXPECT_NE(near_cutoff->find("(--nz 352 in run or compare)"), std::string::npos) << *near_cutoff;
+  EXPECT_FALSE(
+      cli::twod_growth_accuracy_warning(good, h0 / 47.5, 0.02, 0.82001, 2.03 * h0).has_value());
+  EXPECT_FALSE(
+      cli::twod_growth_accuracy_warning(good, h0 / 15.5, 0.08, 1.0891, 2.03 * h0).has_value());
   // no growth, nothing to measure
-  EXPECT_FALSE(cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.013, -0.2).has_value());
+  EXPECT_FALSE(
+      cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.013, -0.2, 2.03 * h0).has_value());
 }
 
 // A grid the pressure multigrid cannot coarsen to a directly solved one is named with the counts

@@ -8,6 +8,12 @@
 //                Whole columns are solved at once because the grid is finer in z than in x
 //                (coefficient ratio (dx/dz)^2) and the density jump of the free surface
 //                (beta jumps by rho_g/rho_l ~ 1e3) runs across the columns.
+//                The columns of one colour are solved eight side by side, one per vector lane
+//                (kLineLanes; solve_column_group), the rest four at a time: the recurrences in
+//                z are chains of dependent operations, whose latency bounded the solve of one or
+//                four columns (the smoother went from 15 % to 8 % of a 256 x 64 step,
+//                docs/performance.md, thirty-first session). Every grouping does the same
+//                arithmetic on a column, so the results are the same to the last bit.
 //   coarsening   both directions where the cells are at least twice as wide as tall; x alone
 //                (semi-coarsening) below that. The z-line smoother damps every error that
 //                varies fast in z, and the zebra order the error that varies fast in x; on
@@ -59,10 +65,56 @@ void PoissonLevel::apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   });
 }
 
+namespace {
+// kLineLanes values, one per column of a group (PoissonLevel's line_* arrays)
+using LineVector = double __attribute__((vector_size(kLineLanes * sizeof(double))));
+}  // namespace
+
 void PoissonLevel::factorise() {
+  // The Thomas factors of every column: for the columns of the smoother's groups (the header)
+  // in their lanes, kLineLanes columns at once, with their coefficients; for the others (the
+  // remainder of each colour, or every column of an odd nx) column by column in cp and inv_m,
+  // which the grouped columns do not use. Either way each column's factors come from the same
+  // arithmetic (solve_column_group below).
+  line_groups = nx % 2 == 0 ? nx / 2 / kLineLanes : 0;
+  const std::size_t entries = std::size_t(2 * line_groups) * nz * kLineLanes;
+  for (auto* v : {&line_cl, &line_cr, &line_cz, &line_inv_m, &line_cp}) v->resize(entries);
+  line_work.resize(entries);
   cp.resize(nx * nz);
   inv_m.resize(nx * nz);
-  parallel_for(nx, nx * nz >= kParallelCells, [&](int i) {
+  const bool parallel = nx * nz >= kParallelCells;
+  parallel_for(2 * line_groups, parallel, [&](int cg) {
+    const int colour = cg / line_groups, g = cg % line_groups;
+    int i[kLineLanes], ir[kLineLanes];
+    for (int j = 0; j < kLineLanes; ++j) {
+      i[j] = colour + 2 * (kLineLanes * g + j);
+      ir[j] = i[j] == nx - 1 ? 0 : i[j] + 1;
+    }
+    LineVector cp_below = {};
+    for (int k = 0; k < nz; ++k) {
+      LineVector left, right, face, face_above;
+      for (int j = 0; j < kLineLanes; ++j) {
+        left[j] = cx[cell(i[j], k)];
+        right[j] = cx[cell(ir[j], k)];
+        face[j] = cz[zface(i[j], k)];
+        face_above[j] = cz[zface(i[j], k + 1)];
+      }
+      const LineVector zero = {};
+      const LineVector diag = left + right + face + face_above;
+      const LineVector lower = k > 0 ? -face : zero, upper = k < nz - 1 ? -face_above : zero;
+      const LineVector inv = 1.0 / (diag - (k > 0 ? lower * cp_below : zero));
+      cp_below = upper * inv;
+      const std::size_t e = (std::size_t(cg) * nz + k) * kLineLanes;
+      __builtin_memcpy(&line_cl[e], &left, sizeof left);
+      __builtin_memcpy(&line_cr[e], &right, sizeof right);
+      __builtin_memcpy(&line_cz[e], &face, sizeof face);
+      __builtin_memcpy(&line_inv_m[e], &inv, sizeof inv);
+      __builtin_memcpy(&line_cp[e], &cp_below, sizeof cp_below);
+    }
+  });
+  const int grouped = kLineLanes * line_groups;
+  const int rest = nx % 2 == 0 ? nx / 2 - grouped : 0;  // ungrouped columns of each colour
+  auto column = [&](int i) {
     const int ir = i == nx - 1 ? 0 : i + 1;
     for (int k = 0; k < nz; ++k) {
       const int c = cell(i, k);
@@ -72,7 +124,13 @@ void PoissonLevel::factorise() {
       inv_m[c] = 1.0 / (diag - (k > 0 ? lower * cp[c - 1] : 0.0));
       cp[c] = upper * inv_m[c];
     }
-  });
+  };
+  if (nx % 2 == 1)
+    parallel_for(nx, parallel, column);
+  else
+    parallel_for(2 * rest, parallel, [&](int r) {
+      column(r % 2 + 2 * (grouped + r / 2));  // colour r % 2, its column grouped + r / 2
+    });
 }
 
 namespace {
@@ -217,6 +275,54 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
     for (int j = 0; j < n; ++j) xi[j][k] -= cp[j][k] * xi[j][k + 1];
 }
 
+// The Thomas algorithm of solve_columns on the kLineLanes columns of group g of one colour at
+// once, lane j in element j of a vector: each column's arithmetic is exactly the scalar one (the
+// same operations in the same order; no contraction, CMakeLists.txt), so the result does not
+// depend on whether a column is solved here or alone. The latency of the recurrences in k, which
+// bound the scalar solve, is paid once for all the group's columns.
+template <bool zero_neighbours>
+void solve_column_group(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                        int colour, int g) {
+  const int nx = L.nx, nz = L.nz;
+  std::size_t at[kLineLanes], left[kLineLanes], right[kLineLanes];  // column starts
+  for (int j = 0; j < kLineLanes; ++j) {
+    const int i = colour + 2 * (kLineLanes * g + j);
+    at[j] = std::size_t(L.cell(i, 0));
+    left[j] = std::size_t(L.cell(i == 0 ? nx - 1 : i - 1, 0));
+    right[j] = std::size_t(L.cell(i == nx - 1 ? 0 : i + 1, 0));
+  }
+  const std::size_t base = std::size_t(colour * L.line_groups + g) * nz * kLineLanes;
+  auto coefficient = [base](const std::vector<double>& v, int k) {
+    LineVector r;
+    __builtin_memcpy(&r, &v[base + std::size_t(k) * kLineLanes], sizeof r);
+    return r;
+  };
+  auto gather = [](const Eigen::VectorXd& v, const std::size_t(&start)[kLineLanes], int k) {
+    LineVector r;
+    for (int j = 0; j < kLineLanes; ++j) r[j] = v[start[j] + k];
+    return r;
+  };
+  double* work = &L.line_work[base];
+  LineVector d = {};
+  for (int k = 0; k < nz; ++k) {
+    const LineVector rhs = zero_neighbours
+                               ? gather(b, at, k)
+                               : gather(b, at, k) + coefficient(L.line_cl, k) * gather(x, left, k) +
+                                     coefficient(L.line_cr, k) * gather(x, right, k);
+    d = (rhs + coefficient(L.line_cz, k) * d) * coefficient(L.line_inv_m, k);
+    __builtin_memcpy(work + std::size_t(k) * kLineLanes, &d, sizeof d);
+  }
+  LineVector next = d;  // row nz - 1: the forward value is final
+  for (int j = 0; j < kLineLanes; ++j) x[at[j] + nz - 1] = next[j];
+  for (int k = nz - 2; k >= 0; --k) {
+    LineVector xk;
+    __builtin_memcpy(&xk, work + std::size_t(k) * kLineLanes, sizeof xk);
+    xk -= coefficient(L.line_cp, k) * next;
+    next = xk;
+    for (int j = 0; j < kLineLanes; ++j) x[at[j] + k] = xk[j];
+  }
+}
+
 }  // namespace
 
 void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd& b,
@@ -235,13 +341,19 @@ void PressureMultigrid::line_sweep(const PoissonLevel& L, const Eigen::VectorXd&
     const int count = first < nx ? (nx - 1 - first) / 2 + 1 : 0;
     const bool last_alone = nx % 2 == 1 && first == 0 && count > 1;  // column nx - 1
     const int free = last_alone ? count - 1 : count;                 // columns first + 2m, m < free
-    const int quads = free / 4;
+    // Groups of kLineLanes columns side by side (even nx, PoissonLevel::factorise), then the
+    // rest four and one at a time.
+    const int groups = L.line_groups;
+    const int grouped = kLineLanes * groups;
+    const int quads = (free - grouped) / 4;
     if (last_alone && !ascending) solve_columns<1>(L, b, x, {nx - 1});
+    parallel_for(groups, parallel, [&](int g) { solve_column_group<zero>(L, b, x, first, g); });
     parallel_for(quads, parallel, [&](int m) {
-      const int c = first + 8 * m;
+      const int c = first + 2 * grouped + 8 * m;
       solve_columns<4, zero>(L, b, x, {c, c + 2, c + 4, c + 6});
     });
-    for (int m = 4 * quads; m < free; ++m) solve_columns<1, zero>(L, b, x, {first + 2 * m});
+    for (int m = grouped + 4 * quads; m < free; ++m)
+      solve_columns<1, zero>(L, b, x, {first + 2 * m});
     if (last_alone && ascending) solve_columns<1>(L, b, x, {nx - 1});
   };
   if (forward && from_zero) {  // x = 0 on entry: the even columns see zero neighbours

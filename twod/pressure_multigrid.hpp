@@ -19,6 +19,13 @@ struct PoissonLevel {
   int cell(int i, int k) const { return i * nz + k; }
   int zface(int i, int k) const { return i * (nz + 1) + k; }
   std::vector<double> cp, inv_m;  // Thomas factors of the column blocks (set by factorise())
+  // The same coefficients for the line smoother, by groups of kLineLanes columns of one colour
+  // (columns c + 2 (kLineLanes g + j), lane j): entry ((c groups + g) nz + k) kLineLanes + j, so
+  // that the group's columns are solved side by side in vector registers. Set by factorise()
+  // when nx is even; `line_work` holds the forward sweep's values of each group.
+  std::vector<double> line_cl, line_cr, line_cz, line_inv_m, line_cp;
+  mutable std::vector<double> line_work;
+  int line_groups = 0;  // groups per colour
   void factorise();
   void apply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 };
@@ -29,6 +36,7 @@ struct PoissonLevel {
 // coarsest is solved directly up to kDirectCoarsestCells cells and smoothed by line sweeps above
 // (an odd count on a large grid), at several times the cost of a step.
 inline constexpr int kDirectCoarsestCells = 2048;
+inline constexpr int kLineLanes = 8;  // columns solved side by side (one AVX-512 register)
 inline constexpr double kCoarsenXAloneBelowAspect = 2.0;
 // (nx, nz) of the coarsest level for a fine grid of cells dx / dz = aspect
 std::pair<int, int> coarsest_level(int nx, int nz, double aspect);

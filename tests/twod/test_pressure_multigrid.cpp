@@ -1,6 +1,7 @@
 // The pressure multigrid (twod/pressure_multigrid.cpp) as conjugate gradients needs it: a
-// symmetric positive preconditioner, on grids whose zebra colours split into groups of four
-// columns with and without a remainder, and with an odd nx (the last column solved alone); and
+// symmetric positive preconditioner, on grids whose zebra colours split into groups of eight and
+// of four columns with and without a remainder, and with an odd nx (the last column solved
+// alone); every grouping solving a column with the same arithmetic; and
 // multigrid-preconditioned CG solving the operator to its tolerance, checked against a direct
 // solve of the same operator with a density jump of 1e4 across a wavy surface.
 #include <gtest/gtest.h>
@@ -63,10 +64,10 @@ Eigen::SparseMatrix<double> assembled(const PoissonLevel& L) {
 }  // namespace
 
 TEST(PressureMultigrid, SymmetricPositivePreconditionerOnEveryColumnGrouping) {
-  // nx = 24: 12 columns per colour, 3 groups of four; 26: 13, a remainder of one; 30: 15, a
-  // remainder of three; 33: odd, the last column alone. Large enough levels (>= 2048 cells)
-  // take the parallel path; the smaller ones the serial one, with the same groups.
-  // On square cells (aspect 1) the levels are halved along x alone first.
+  // nx = 24: 12 columns per colour, a group of eight and one of four; 26: 13, a remainder of
+  // one; 30: 15, a remainder of three; 33: odd, the last column alone; 160: ten groups of eight.
+  // Large enough levels (>= 2048 cells) take the parallel path; the smaller ones the serial one,
+  // with the same groups. On square cells (aspect 1) the levels are halved along x alone first.
   for (const double aspect : {4.0, 1.0})
     for (const double rho_light : {0.15, 0.015, 1.5e-3})
       for (int nx : {24, 26, 30, 33, 160}) {
@@ -85,6 +86,37 @@ TEST(PressureMultigrid, SymmetricPositivePreconditionerOnEveryColumnGrouping) {
         EXPECT_GT(r1.dot(z1), 0.0);
         EXPECT_GT(r2.dot(z2), 0.0);
       }
+}
+
+// The line smoother solves a column with the same arithmetic whether the column is one of a
+// group of eight solved side by side (vector lanes), one of four, or alone. On an operator and a
+// right-hand side that do not vary along x every column of one colour then gets the same
+// values to the last bit. nx = 26: 13 columns per colour, a group of eight, four and one; nz = 81
+// is odd, so the grid is not coarsened and the cycle is the 20 symmetric sweeps of the coarsest
+// level (2 106 cells: no direct solve, whose elimination order would differ between columns).
+TEST(PressureMultigrid, EveryColumnGroupingSolvesAColumnBitwiseAlike) {
+  const int nx = 26, nz = 81;
+  PoissonLevel L;
+  L.nx = nx;
+  L.nz = nz;
+  L.cx.assign(std::size_t(nx) * nz, 0.0);
+  L.cz.assign(std::size_t(nx) * (nz + 1), 0.0);
+  for (int i = 0; i < nx; ++i) {
+    for (int k = 0; k < nz; ++k) L.cx[L.cell(i, k)] = k < nz / 2 ? 0.25 / 1500.0 : 0.25 / 0.015;
+    for (int k = 1; k < nz; ++k) L.cz[L.zface(i, k)] = k <= nz / 2 ? 4.0 / 1500.0 : 4.0 / 0.015;
+    L.cz[L.zface(i, nz)] = 8.0 / 0.015;
+  }
+  PressureMultigrid mg;
+  mg.set_operator(L, 4.0);
+  ASSERT_EQ(mg.levels(), 1);
+  const Eigen::VectorXd column = random_vector(nz, 4);
+  Eigen::VectorXd r(nx * nz), z;
+  for (int i = 0; i < nx; ++i) r.segment(L.cell(i, 0), nz) = column;
+  mg.precondition(r, z);
+  for (int i = 2; i < nx; ++i)
+    for (int k = 0; k < nz; ++k)
+      ASSERT_EQ(z[L.cell(i, k)], z[L.cell(i % 2, k)]) << "column " << i << ", row " << k;
+  EXPECT_GT(z.norm(), 0.0);
 }
 
 TEST(PressureMultigrid, PreconditionedCgMatchesADirectSolve) {

@@ -280,6 +280,12 @@ void solve_columns(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::Vecto
 // same operations in the same order; no contraction, CMakeLists.txt), so the result does not
 // depend on whether a column is solved here or alone. The latency of the recurrences in k, which
 // bound the scalar solve, is paid once for all the group's columns.
+// (Its lambdas return 512-bit vectors, whose calling convention differs with and without
+// AVX-512; GCC warns of that on builds without it. They are inlined here and never called across
+// a translation unit, so the warning does not apply. Filling the vectors through references
+// instead made the 256 x 64 step 3-5 % slower.)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
 template <bool zero_neighbours>
 void solve_column_group(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                         int colour, int g) {
@@ -322,6 +328,7 @@ void solve_column_group(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::
     for (int j = 0; j < kLineLanes; ++j) x[at[j] + k] = xk[j];
   }
 }
+#pragma GCC diagnostic pop
 
 }  // namespace
 

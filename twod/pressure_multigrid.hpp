@@ -18,7 +18,9 @@ struct PoissonLevel {
   std::vector<double> cz;       // z-face coefficients at i (nz + 1) + k, k = 0 (bed) .. nz (top)
   int cell(int i, int k) const { return i * nz + k; }
   int zface(int i, int k) const { return i * (nz + 1) + k; }
-  std::vector<double> cp, inv_m;  // Thomas factors of the column blocks (set by factorise())
+  // Thomas factors of the column blocks, set by factorise() for the columns outside the line
+  // smoother's groups (below), which hold their own
+  std::vector<double> cp, inv_m;
   // The same coefficients for the line smoother, by groups of kLineLanes columns of one colour
   // (columns c + 2 (kLineLanes g + j), lane j): entry ((c groups + g) nz + k) kLineLanes + j, so
   // that the group's columns are solved side by side in vector registers. Set by factorise()

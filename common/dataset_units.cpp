@@ -109,6 +109,15 @@ const std::map<std::string, DatasetDoc>& by_name() {
       {"wall_seconds", {"s", "wall-clock time of the run"}},
       {"completed", {"1", "1 where the point completed, 0 where not"}},
       {"growth_rate_712", {"1/s", "growth rate by the estimator (7.12) over the fit window"}},
+      {"growth_rate_half_cells",
+       {"1/s", "2D growth rate on half the cells across the layer (sweep --extrapolate)"}},
+      {"dz_ratio", {"1", "cell height of the half grid over the point's (sweep --extrapolate)"}},
+      {"growth_rate_extrapolated",
+       {"1/s", "2D growth rate extrapolated to cells of no height, order 1.4 (NaN: not asked)"}},
+      {"growth_rate_extrapolated_low",
+       {"1/s", "lower bound of the extrapolation (orders 1.3 and 1.7)"}},
+      {"growth_rate_extrapolated_high",
+       {"1/s", "upper bound of the extrapolation (orders 1.3 and 1.7)"}},
   };
   return t;
 }

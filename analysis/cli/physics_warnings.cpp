@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <numbers>
 
 #include "analysis/comparison/twod_settings.hpp"
 #include "twod/pressure_multigrid.hpp"
@@ -51,12 +50,6 @@ std::vector<std::string> twod_warnings(const SteadyState& base, double dz, doubl
     w.emplace_back(buf);
   }
   return w;
-}
-
-double expected_twod_growth_deficit(const SteadyState& base, double dz, double wavelength) {
-  const double k = 2.0 * std::numbers::pi / wavelength;
-  return kGrowthDeficitCoefficient * std::sqrt(base.material.g / base.h0) *
-         std::pow(k * dz, kGrowthDeficitOrder);
 }
 
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/comparison/growth_deficit_law.hpp"
 #include "common/steady_state.hpp"
 
 namespace granbench::cli {
@@ -26,17 +27,10 @@ inline constexpr double kTrustedCellsPerDepth = 32.0;
 
 // wavelength: the seeded wave's length [m] (Lx / mode).
 std::vector<std::string> twod_warnings(const SteadyState& base, double dz, double wavelength);
-// The 2D model's growth rate below the exact 2D theory's, as measured: on the section 7 case (28.5
-// degrees, h0 = 4 mm) for waves of 3.75 to 20 h0 on 15.5 to 127.5 cells per h0, and on 30 degrees,
-// 5 mm, 10 cm, the deficit is C sqrt(g/h0) (k dz)^1.4 with C between 0.15 and 0.20 (0.17 at the
-// median), falling to 0.12 for waves of 100 h0 (docs/twod-validation.md §3, "One law for the
-// deficit"): the surface layer's error, of order 1.4 in dz, set by the cells per wavelength across
-// the layer. Calibrated on one curve and two slopes: a guide for warnings, not a correction.
-inline constexpr double kGrowthDeficitCoefficient = 0.17;
-inline constexpr double kGrowthDeficitOrder = 1.4;
-double expected_twod_growth_deficit(const SteadyState& base, double dz, double wavelength);
+// The deficit law (kGrowthDeficitCoefficient, kGrowthDeficitOrder, expected_twod_growth_deficit)
+// is in analysis/comparison/growth_deficit_law.hpp.
 
-// When that deficit is more than 10 % of a positive exact 2D growth rate (a wave near the 2D
+// When the law's deficit is more than 10 % of a positive exact 2D growth rate (a wave near the 2D
 // cutoff, or a coarse grid), a warning with the growth, the expected deficit and the cells per h0
 // that would bring it to 5 %, as the --nz that gives them on a domain of this height (a multiple
 // of 16, as the default grids); nothing otherwise.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -81,7 +82,10 @@ SharedSweep run_shared(SweepSpec spec, const OutputOptions& output,
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     std::cerr << "  [" << done << "/" << total << "] " << p.model << " Lx = " << p.Lx
-              << " m: growth " << p.growth_rate << " 1/s (" << p.wall_seconds << " s), "
+              << " m: growth " << p.growth_rate << " 1/s";
+    if (!std::isnan(p.growth_rate_extrapolated))
+      std::cerr << ", extrapolated " << p.growth_rate_extrapolated << " 1/s";
+    std::cerr << " (" << p.wall_seconds << " s), "
               << eta_text(wall, 0.0, double(done), double(total)) << "\n";
   };
   auto ran = run_share(spec, finished, progress);

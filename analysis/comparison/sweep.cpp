@@ -7,6 +7,7 @@
 #include <mutex>
 #include <thread>
 
+#include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/spectral/growth_estimator_712.hpp"
 
 namespace granbench {
@@ -118,6 +119,27 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
     p.message += (p.message.empty() ? "" : "; ") + ("no growth rate: " + m.spectral.reason);
 }
 
+// The seeded 2D point again on half the cells across the layer, and its growth rate extrapolated
+// from the two (twod_extrapolation.hpp). A second run that stops early leaves the point
+// unfinished (a resume runs it again); one that completes without a growth rate leaves the
+// extrapolation NaN and says why.
+void extrapolate_in_dz(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
+                       const RunControl& ctl) {
+  const TwodExtrapolation e = extrapolate_twod_growth(
+      c, point_twod_settings(spec, c.Lx), p.growth_rate, p.theory.exact_2d.phase_speed, ctl);
+  p.wall_seconds += e.wall_seconds;
+  if (!e.found()) {
+    p.message += (p.message.empty() ? "" : "; ") + ("not extrapolated: " + e.reason);
+    p.completed = p.completed && e.outcome == RunOutcome::Completed;
+    return;
+  }
+  p.growth_rate_half_cells = e.growth_rate_half_cells;
+  p.dz_ratio = e.dz_ratio;
+  p.growth_rate_extrapolated = e.growth.value;
+  p.growth_rate_extrapolated_low = e.growth.low;
+  p.growth_rate_extrapolated_high = e.growth.high;
+}
+
 SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& ctl) {
   ChuteCase c = spec.chute;
   c.Lx = task.Lx;
@@ -132,6 +154,8 @@ SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& 
       measure_linear(spec, c, p);
     else
       measure_seeded(spec, c, p, ctl);
+    if (p.model == "twod" && spec.twod_extrapolate && p.completed)
+      extrapolate_in_dz(spec, c, p, ctl);
   } catch (const std::exception& e) {
     p.completed = false;
     p.message = e.what();

@@ -15,6 +15,7 @@
 // sweep whose settings differ from the new one is refused rather than mixed in.
 #pragma once
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <span>
@@ -39,7 +40,14 @@ struct SweepPoint {
   double fit_r2 = 0.0;                                      // of ln|h_k| over the window
   double steps = 0.0;                                       // time steps of the run
   double mass_error = 0.0;                                  // relative
-  double wall_seconds = 0.0;
+  double wall_seconds = 0.0;                                // of the point's runs
+  // With SweepSpec::twod_extrapolate, a 2D point runs again on half the cells across the layer,
+  // and its growth rate is extrapolated to cells of no height (growth_deficit_law.hpp); NaN
+  // otherwise.
+  double growth_rate_half_cells = NAN;  // measured on half the cells across the layer
+  double dz_ratio = NAN;                // their height over the point's
+  double growth_rate_extrapolated = NAN;
+  double growth_rate_extrapolated_low = NAN, growth_rate_extrapolated_high = NAN;  // its bounds
   bool completed = false;
   bool resumed = false;  // read back from an earlier run (not stored)
   std::string message;   // why a point did not complete (not stored)
@@ -58,6 +66,10 @@ struct SweepSpec {
   // with depthavg_settings.chi (depthavg_settings.nx is then unused).
   std::optional<depthavg::LinearRunParams> depthavg_linear;
   TwodSettings twod_settings;
+  // Each 2D point also runs on half the cells across the layer, and its growth rate is
+  // extrapolated in the cell height with the deficit law's order (growth_deficit_law.hpp): near
+  // the 2D cutoff a grid's deficit is a large part of a small growth rate.
+  bool twod_extrapolate = false;
   // Set: growth_rate_712 is (7.12) averaged over this fixed window [t0, t1] (the paper's
   // protocol for figure 13: 0.5 s < t < 3 s), not over the spectral fit's window.
   std::optional<std::pair<double, double>> window_712;

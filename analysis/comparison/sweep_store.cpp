@@ -1,5 +1,6 @@
 // The sweep's HDF5 file and the points' trip between processes; see sweep.hpp.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "analysis/comparison/sweep.hpp"
@@ -38,6 +39,8 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
                          {"window_712_end", s.window_712->second}});
     for (const auto& [name, value] : named_values(s.twod_settings))
       v.emplace_back("twod_" + name, value);
+    // (stored only when set: a sweep without it resumes the files written before it existed)
+    if (s.twod_extrapolate) v.emplace_back("twod_extrapolate", 1.0);
   }
   return v;
 }
@@ -63,6 +66,11 @@ const char* const kColumns[] = {"Lx",
                                 "steps",
                                 "mass_error",
                                 "wall_seconds",
+                                "growth_rate_half_cells",
+                                "dz_ratio",
+                                "growth_rate_extrapolated",
+                                "growth_rate_extrapolated_low",
+                                "growth_rate_extrapolated_high",
                                 "completed"};
 constexpr std::size_t kWidth = std::size(kColumns);
 
@@ -86,7 +94,12 @@ std::vector<double*> fields(SweepPoint& p) {
           &p.fit_r2,
           &p.steps,
           &p.mass_error,
-          &p.wall_seconds};
+          &p.wall_seconds,
+          &p.growth_rate_half_cells,
+          &p.dz_ratio,
+          &p.growth_rate_extrapolated,
+          &p.growth_rate_extrapolated_low,
+          &p.growth_rate_extrapolated_high};
 }
 std::vector<double> row(SweepPoint p) {
   std::vector<double> r;
@@ -199,7 +212,11 @@ std::vector<SweepPoint> read_sweep(const std::string& path) {
     const std::string g = std::string(model) + "/";
     if (!h5_has(path, g + "Lx")) continue;
     std::vector<std::vector<double>> cols;
-    for (const char* c : kColumns) cols.push_back(h5_read_doubles(path, g + c));
+    const std::size_t n = h5_read_doubles(path, g + "Lx").size();
+    // (a column added since the file was written reads as NaN: the extrapolation's)
+    for (const char* c : kColumns)
+      cols.push_back(h5_has(path, g + c) ? h5_read_doubles(path, g + c)
+                                         : std::vector<double>(n, NAN));
     for (std::size_t i = 0; i < cols[0].size(); ++i) {
       std::vector<double> r;
       for (const auto& col : cols) r.push_back(col.at(i));

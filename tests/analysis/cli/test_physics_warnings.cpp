@@ -33,7 +33,7 @@ TEST(PhysicsWarnings, IllPosedBaseStateAndCoarseGridAreNamed) {
   // with what the measured law expects of this wave, the same figure as the growth-law warning
   char deficit[64];
   std::snprintf(deficit, sizeof deficit, "about %.2g 1/s under",
-                cli::expected_twod_growth_deficit(good, 4e-3 / 16.0, 0.08));
+                granbench::expected_twod_growth_deficit(good, 4e-3 / 16.0, 0.08));
   EXPECT_NE(coarse[0].find(deficit), std::string::npos) << coarse[0];
   EXPECT_NE(coarse[0].find("this wave (20 h0)"), std::string::npos) << coarse[0];
 
@@ -70,8 +70,8 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
   const SteadyState good = section7(CurveKind::Regularised, 28.5);
   const double h0 = 4e-3;
   // the law's order: halving dz divides the deficit by 2^1.4
-  EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / 32.0, 0.02) /
-                  cli::expected_twod_growth_deficit(good, h0 / 64.0, 0.02),
+  EXPECT_NEAR(granbench::expected_twod_growth_deficit(good, h0 / 32.0, 0.02) /
+                  granbench::expected_twod_growth_deficit(good, h0 / 64.0, 0.02),
               std::pow(2.0, 1.4), 1e-12);
   const auto near_cutoff =
       cli::twod_growth_accuracy_warning(good, h0 / 63.5, 0.015, 0.26657, 2.03 * h0);
@@ -81,7 +81,8 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
   // the cells it names give 5 % by the same law
   const double aimed = std::stod(near_cutoff->substr(near_cutoff->rfind("about ") + 6));
   // (printed as a whole number: 0.5 in 168 moves the law by 0.4 %, 2e-4 of the 5 %)
-  EXPECT_NEAR(cli::expected_twod_growth_deficit(good, h0 / aimed, 0.015) / 0.26657, 0.05, 2.5e-4);
+  EXPECT_NEAR(granbench::expected_twod_growth_deficit(good, h0 / aimed, 0.015) / 0.26657, 0.05,
+              2.5e-4);
   // and the --nz that puts them across this domain (2.03 h0 x 168 = 341 cells, rounded up to 352)
   EXPECT_NE(near_cutoff->find("(--nz 352 in run or compare)"), std::string::npos) << *near_cutoff;
   EXPECT_FALSE(

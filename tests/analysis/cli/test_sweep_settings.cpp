@@ -38,8 +38,9 @@ Trial try_value(const std::string& model, const std::string& option, const std::
   SweepOptions o;
   add_sweep_options(app, o);
   std::vector<std::string> args = {"--model", model};
-  if (!option.empty()) args.insert(args.end(), {option, value});
-  std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+  if (!option.empty()) args.push_back(option);
+  if (!value.empty()) args.push_back(value);  // (a flag is given alone)
+  std::reverse(args.begin(), args.end());     // CLI11 parses a reversed vector
   try {
     app.parse(args);
   } catch (const CLI::ParseError& e) {
@@ -60,8 +61,9 @@ Trial try_value(const std::string& model, const std::string& option, const std::
 }
 
 // Values to try instead of the default: the other allowed values of a choice, else numbers near
-// the default and a few plain ones (the first valid one is enough).
+// the default and a few plain ones (the first valid one is enough); for a flag, the flag alone.
 std::vector<std::string> candidates(const CLI::Option& opt) {
+  if (opt.get_expected_min() == 0) return {""};  // a flag: given, it differs from the default
   std::vector<std::string> v;
   const std::string def = opt.get_default_str();
   const std::string type = opt.get_type_name();
@@ -188,6 +190,24 @@ TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
   ASSERT_EQ(near_cutoff.size(), 1u);
   EXPECT_EQ(near_cutoff[0].find("Lx = 0.015 m: a small growth rate"), 0u) << near_cutoff[0];
   EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4", "").empty());
+  // which names the cheaper way out, the extrapolation from half the cells across the layer
+  EXPECT_NE(near_cutoff[0].find("or give --extrapolate"), std::string::npos) << near_cutoff[0];
+}
+
+// --extrapolate needs a half grid within the deficit law's range: refused on the coarse preset.
+TEST(SweepSettings, ExtrapolationIsRefusedOnTheCoarsePreset) {
+  CLI::App app;
+  SweepOptions o;
+  add_sweep_options(app, o);
+  std::vector<std::string> args = {"--model", "twod", "--resolution", "coarse", "--extrapolate"};
+  std::reverse(args.begin(), args.end());
+  app.parse(args);
+  try {
+    (void)plan_sweep(o, app);
+    ADD_FAILURE() << "--extrapolate accepted on the coarse preset";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("--extrapolate: ", 0), 0u) << e.what();
+  }
 }
 
 }  // namespace

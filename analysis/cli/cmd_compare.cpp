@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 #include "analysis/cli/cli_common.hpp"
@@ -60,6 +61,19 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave
   depthavg.co_moving = o.frame_speed == "linear";
+  if (o.extrapolate && saturated.enabled)
+    throw UsageError("--extrapolate: not with --saturated, whose wave leaves the linear regime");
+  if (const double n = half_grid_cells_per_depth(twod, chute.h0);
+      o.extrapolate && n < kGrowthDeficitFewestCellsPerDepth) {
+    std::ostringstream m;
+    const int nz_needed = TwodSettings::multiple_of_16(static_cast<int>(std::ceil(
+        2.0 * kGrowthDeficitFewestCellsPerDepth * twod.domain_height(chute.h0) / chute.h0)));
+    m << "--extrapolate: half of this grid's cells across the layer, " << n
+      << " per h0, lie below the deficit law's range; valid with at least "
+      << kGrowthDeficitFewestCellsPerDepth
+      << " per h0 there: --resolution default or fine, or --nz " << nz_needed << " or more";
+    throw UsageError(m.str());
+  }
   if (saturated.enabled)
     return run_compare_saturated(chute, depthavg, twod, o.output, saturated, warnings);
 
@@ -112,6 +126,14 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   twod_opt.seeded_phase_speed = c.theory.exact_2d.phase_speed;
   c.depthavg_measured = measure(c.depthavg.series, depthavg_opt);
   c.twod_measured = measure(c.twod.series, twod_opt);
+  if (o.extrapolate && c.twod.outcome == RunOutcome::Completed &&
+      c.depthavg.outcome == RunOutcome::Completed) {
+    const TwodSettings half = half_cells_across(twod);
+    if (show) std::cerr << "  twod again on " << half.nx << " x " << half.nz << " cells\n";
+    c.twod_extrapolation = extrapolate_twod_growth(
+        chute, twod, c.twod_measured.spectral.growth_rate, c.theory.exact_2d.phase_speed, ctl);
+    if (show) std::cerr << "\n";
+  }
 
   write_comparison(h5, c, twod, depthavg);
   plot_run("compare.py", h5, png, "",
@@ -124,6 +146,10 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
     std::cout << "  wrote " << h5 << " and " << png << "\n";
   }
   throw_unless_both_completed(c, guard, h5);
+  if (c.twod_extrapolation && c.twod_extrapolation->outcome == RunOutcome::Interrupted)
+    throw CommandFailed(
+        "interrupted on half the cells across the layer; both models' runs are in " + h5,
+        guard.exit_code());
 }
 
 }  // namespace

@@ -57,6 +57,36 @@ void print_measured(const char* label, const SurfaceMeasurement& m, const Theory
   }
 }
 
+// The extrapolated 2D row (compare --extrapolate), or n/a and the reason.
+void print_extrapolated(const TwodExtrapolation& e, const TheoryValue& ref) {
+  std::cout << std::setprecision(4) << "  " << std::left << std::setw(25) << "twod (extrapolated)"
+            << std::right;
+  if (!e.found()) {
+    std::cout << std::setw(12) << "n/a" << std::setw(20) << ""
+              << "   (not extrapolated: " << e.reason << ")\n";
+    return;
+  }
+  std::cout << std::setw(12) << e.growth.value << std::setw(20) << ""
+            << "   vs 2D linear: " << std::setprecision(2) << std::showpos
+            << 100.0 * (e.growth.value - ref.growth_rate) / std::fabs(ref.growth_rate) << " %"
+            << std::noshowpos << std::setprecision(4) << " (bounds " << e.growth.low << " to "
+            << e.growth.high << "; " << e.growth_rate_half_cells << " on " << e.nx << " x " << e.nz
+            << ")\n";
+}
+
+nlohmann::json extrapolation_json(const TwodExtrapolation& e, const TheoryValue& ref) {
+  if (!e.found()) return {{"growth_rate", nullptr}, {"reason", e.reason}};
+  return {
+      {"growth_rate", e.growth.value},
+      {"growth_rate_bounds", {e.growth.low, e.growth.high}},
+      {"growth_relative_error", (e.growth.value - ref.growth_rate) / std::fabs(ref.growth_rate)},
+      {"growth_rate_half_cells", e.growth_rate_half_cells},
+      {"half_cells_grid", {e.nx, e.nz}},
+      {"dz_ratio", e.dz_ratio},
+      {"wall_seconds", e.wall_seconds},
+      {"steps", e.steps}};
+}
+
 }  // namespace
 
 void print_table(const Comparison& c) {
@@ -73,6 +103,7 @@ void print_table(const Comparison& c) {
             << std::setw(20) << t.exact_2d.phase_speed << "\n";
   print_measured("depthavg (measured)", c.depthavg_measured.spectral, t.exact, "(7.11)");
   print_measured("twod (measured)", c.twod_measured.spectral, t.exact_2d, "2D linear");
+  if (c.twod_extrapolation) print_extrapolated(*c.twod_extrapolation, t.exact_2d);
   for (const auto* m : {&c.depthavg_measured, &c.twod_measured}) {
     const char* name = m == &c.depthavg_measured ? "depthavg" : "twod";
     const SurfaceMeasurement& w = m->spectral;
@@ -100,11 +131,21 @@ void print_table(const Comparison& c) {
             << " steps), 2D mass error " << std::scientific << std::setprecision(1)
             << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3) << c.twod.I_min
             << ", " << c.twod.I_max << "], ill-posed fraction " << c.twod.illposed_fraction << "\n";
+  if (c.twod_extrapolation)
+    std::cout << std::setprecision(1)
+              << "  twod on half the cells across the layer: " << c.twod_extrapolation->wall_seconds
+              << " s wall (" << c.twod_extrapolation->steps
+              << " steps); extrapolated with order 1.4 in the cell height, bounds from 1.3 and "
+                 "1.7 (docs/twod-validation.md §3)\n";
 }
 
 nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
                             const std::vector<std::string>& warnings, const std::string& h5,
                             const std::string& png) {
+  nlohmann::json twod = model_json(c.twod, c.twod_measured);
+  twod["extrapolated"] = c.twod_extrapolation
+                             ? extrapolation_json(*c.twod_extrapolation, c.theory.exact_2d)
+                             : nlohmann::json(nullptr);
   return nlohmann::json(
       {{"Lx", c.chute.Lx},
        {"k_hat", c.theory.k_hat},
@@ -118,7 +159,7 @@ nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
          {"phase_speed", c.theory.exact_2d.phase_speed},
          {"convergence", c.theory.exact_2d_convergence}}},
        {"depthavg", model_json(c.depthavg, c.depthavg_measured)},
-       {"twod", model_json(c.twod, c.twod_measured)},
+       {"twod", twod},
        {"twod_viscosity_passes", viscosity_passes},
        {"warnings", warnings},
        {"out", h5},

@@ -14,6 +14,7 @@
 
 #include "analysis/comparison/chute_case.hpp"
 #include "analysis/comparison/model_runs.hpp"
+#include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/spectral/measurement.hpp"
 
 namespace granbench {
@@ -37,6 +38,9 @@ struct Comparison {
   Theories theory;
   ModelRun depthavg, twod;
   Measurement depthavg_measured, twod_measured;
+  // Set with `compare --extrapolate`: the 2D growth rate from this grid and half its cells across
+  // the layer (twod_extrapolation.hpp).
+  std::optional<TwodExtrapolation> twod_extrapolation;
 };
 
 }  // namespace granbench

@@ -53,6 +53,15 @@ void write_comparison(const std::string& path, const Comparison& c, const TwodSe
   out.attribute("twod", "I_min", c.twod.I_min);
   out.attribute("twod", "I_max", c.twod.I_max);
   out.attribute("twod", "illposed_fraction", c.twod.illposed_fraction);
+  if (const auto& e = c.twod_extrapolation) {
+    out.attribute("twod", "extrapolated_growth_rate", e->growth.value);  // NaN: see the reason
+    out.attribute("twod", "extrapolated_growth_rate_low", e->growth.low);
+    out.attribute("twod", "extrapolated_growth_rate_high", e->growth.high);
+    out.attribute("twod", "growth_rate_half_cells", e->growth_rate_half_cells);
+    out.attribute("twod", "half_cells_nz", static_cast<double>(e->nz));
+    out.attribute("twod", "dz_ratio", e->dz_ratio);
+    out.attribute("twod", "extrapolation_reason", e->reason);
+  }
   out.create_group("theory");
   out.attribute("theory", "k_hat", c.theory.k_hat);
   out.attribute("theory", "exact_growth_rate", c.theory.exact.growth_rate);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,17 @@ TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
   expect_refused("compare --curve jop --angle 29.1 --Lx 0.08" + quick, "--Lx:", {"2D linear"});
   expect_refused("compare --Lx 1e9 --h0 29.1" + quick, "--Lx:", {"2D linear"});
   expect_refused("run --model twod --t-end 0.01 --quiet --out 'a b.h5'", "--out:", {"white space"});
+  // an extrapolation from a half grid below the deficit law's range (growth_deficit_law.hpp)
+  expect_refused("compare --extrapolate --resolution coarse" + quick,
+                 "--extrapolate:", {"7.5 per h0", "--nz 64 or more"});
+  expect_refused("compare --extrapolate --nz 40" + quick, "--extrapolate:", {"9.5 per h0"});
+  expect_refused("compare --extrapolate --saturated" + quick,
+                 "--extrapolate: not with --saturated");
+  expect_refused("sweep --model twod --resolution coarse --extrapolate --jobs 1",
+                 "--extrapolate: not with --resolution coarse");
+  expect_refused("sweep --model depthavg --extrapolate --jobs 1",
+                 "--extrapolate: does not apply to --model depthavg");
+  EXPECT_FALSE(std::filesystem::exists(dir + "gb_conv_c.h5"));
 }
 
 // run: an option of the other model is refused, not silently ignored (qa.md: sweep --model twod

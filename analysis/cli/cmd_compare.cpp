@@ -114,8 +114,15 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
                      e.what() + "); choose another --Lx or --h0");
   }
   if (auto w = twod_growth_accuracy_warning(c.base, dz, chute.Lx, c.theory.exact_2d.growth_rate,
-                                            twod.domain_height(chute.h0)))
+                                            twod.domain_height(chute.h0))) {
+    const bool can_extrapolate =
+        half_grid_cells_per_depth(twod, chute.h0) >= kGrowthDeficitFewestCellsPerDepth;
+    if (!o.extrapolate && can_extrapolate)
+      *w +=
+          "; or give --extrapolate, which runs the 2D model again on half the cells across the "
+          "layer and extrapolates its growth to cells of no height";
     warnings.push_back(*w);
+  }
   print_warnings(warnings);  // once every check has passed
   // Both models at once (run_both shares the cores).
   std::tie(c.depthavg, c.twod) = run_both(chute, depthavg, twod, ctl);

@@ -120,9 +120,9 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
 }
 
 // The seeded 2D point again on half the cells across the layer, and its growth rate extrapolated
-// from the two (twod_extrapolation.hpp). A second run that stops early leaves the point
-// unfinished (a resume runs it again); one that completes without a growth rate leaves the
-// extrapolation NaN and says why.
+// from the two (twod_extrapolation.hpp). A second run that is interrupted leaves the point
+// unfinished (a resume runs it again); one that diverges, or completes without a growth rate,
+// leaves the extrapolation NaN and says why (a resume would only repeat it).
 void extrapolate_in_dz(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                        const RunControl& ctl) {
   const TwodExtrapolation e = extrapolate_twod_growth(
@@ -130,7 +130,7 @@ void extrapolate_in_dz(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
   p.wall_seconds += e.wall_seconds;
   if (!e.found()) {
     p.message += (p.message.empty() ? "" : "; ") + ("not extrapolated: " + e.reason);
-    p.completed = p.completed && e.outcome == RunOutcome::Completed;
+    p.completed = p.completed && e.outcome != RunOutcome::Interrupted;
     return;
   }
   p.growth_rate_half_cells = e.growth_rate_half_cells;

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Figure 13 with both models: growth rate against k = 2 pi/Lx from `granbench sweep --model
 twod|both` data, with the three exact theories ((7.11), chi = 5/4, 2D linear) as lines through
-the swept points and each model's measured points; inset: non-dimensional Re(lambda_hat) vs k_hat.
+the swept points and each model's measured points (with --extrapolate also the 2D growth
+extrapolated in the cell height, bounds as error bars); inset: non-dimensional Re(lambda_hat) vs
+k_hat.
 
 usage: sweep_models.py DATA.h5 OUT.png
 """
@@ -33,6 +35,13 @@ def main(data, png):
         km = 2 * np.pi / d["Lx"]
         a.plot(km, d["growth_rate"], mk, color=c, label=name + " (measured)")
         b.plot(km, d["phase_speed"], mk, color=c, label=name + " (measured)")
+        # sweep --extrapolate: the 2D growth extrapolated to cells of no height, with the bounds of
+        # the orders 1.3 and 1.7 as error bars (absent from files written before it existed)
+        ext = d.get("growth_rate_extrapolated")
+        if ext is not None and np.isfinite(ext).any():
+            low, high = d["growth_rate_extrapolated_low"], d["growth_rate_extrapolated_high"]
+            a.errorbar(km, ext, yerr=[ext - low, high - ext], fmt="x", color="tab:green", capsize=3,
+                       label=name + " (extrapolated in dz)")
     a.axhline(0, color="0.5", lw=0.8)
     a.set(xlabel="k = 2 pi / Lx [1/m]", ylabel="growth rate [1/s]", title="figure 13: growth rate")
     a.legend(fontsize=8, loc="lower left")

@@ -21,9 +21,14 @@ double relative_error(double measured, double exact) {
   return std::fabs(measured - exact) / std::fabs(exact);
 }
 
-// The extrapolation of a 2D point (SweepSpec::twod_extrapolate); null without one.
+// The extrapolation of a 2D point (SweepSpec::twod_extrapolate); null where none was asked, a null
+// growth rate and the reason where it could not be made.
 nlohmann::json extrapolated_json(const SweepPoint& p) {
-  if (std::isnan(p.growth_rate_extrapolated)) return nullptr;
+  if (std::isnan(p.growth_rate_extrapolated)) {
+    const auto why = p.message.find("not extrapolated: ");
+    if (why == std::string::npos) return nullptr;
+    return {{"growth_rate", nullptr}, {"reason", p.message.substr(why + 18)}};
+  }
   return {{"growth_rate", p.growth_rate_extrapolated},
           {"growth_rate_bounds", {p.growth_rate_extrapolated_low, p.growth_rate_extrapolated_high}},
           {"growth_relative_error",

@@ -188,14 +188,17 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
 }
 
 std::pair<ModelRun, ModelRun> run_both(const ChuteCase& c, const DepthAvgSettings& depthavg,
-                                       const TwodSettings& twod, const RunControl& ctl) {
+                                       const TwodSettings& twod, const RunControl& ctl,
+                                       const std::function<void()>& after_depthavg) {
   std::atomic<bool> depthavg_done{false};
   auto d = std::async(std::launch::async, [&] {
     struct Done {  // raised however run_depthavg ends, exceptions included
       std::atomic<bool>& flag;
       ~Done() { flag = true; }
     } done{depthavg_done};
-    return run_depthavg(c, depthavg, ctl);
+    ModelRun r = run_depthavg(c, depthavg, ctl);
+    if (after_depthavg) after_depthavg();
+    return r;
   });
   auto t = std::async(std::launch::async,
                       [&] { return run_twod_alongside(c, twod, ctl, &depthavg_done); });

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -71,7 +72,11 @@ ModelRun run_twod(const ChuteCase& c, const TwodSettings& s, const RunControl& c
 // other's state, and the 2D results do not depend on its thread count). While the
 // depth-averaged run occupies a core, the 2D solver uses twod.threads - 1 threads (at
 // least 1), then twod.threads: oversubscribed threads wait on each other.
+// `after_depthavg`, if given, runs on the depth-averaged run's thread once that run has ended
+// (compare --extrapolate: the 2D half grid, on one thread), and the 2D run takes the core back
+// only after it; it must not throw.
 std::pair<ModelRun, ModelRun> run_both(const ChuteCase& c, const DepthAvgSettings& depthavg,
-                                       const TwodSettings& twod, const RunControl& ctl = {});
+                                       const TwodSettings& twod, const RunControl& ctl = {},
+                                       const std::function<void()>& after_depthavg = {});
 
 }  // namespace granbench

@@ -40,4 +40,12 @@ TwodExtrapolation extrapolate_twod_growth(const ChuteCase& c, const TwodSettings
                                           double fine_growth, double seeded_phase_speed,
                                           const RunControl& ctl = {});
 
+// The same in two steps, for a caller that runs the half grid beside the first run (compare):
+// the run on half_cells_across(fine) and its measurement (no run where the half grid is below
+// the law's range; fine.threads are the threads it takes); then, once the first run's growth
+// is known, the extrapolation.
+TwodExtrapolation run_half_grid(const ChuteCase& c, const TwodSettings& fine,
+                                double seeded_phase_speed, const RunControl& ctl = {});
+void extrapolate_from(TwodExtrapolation& half_run, double fine_growth);
+
 }  // namespace granbench

@@ -2,8 +2,8 @@
 """Figure 13 with both models: growth rate against k = 2 pi/Lx from `granbench sweep --model
 twod|both` data, with the three exact theories ((7.11), chi = 5/4, 2D linear) as lines through
 the swept points and each model's measured points (with --extrapolate also the 2D growth
-extrapolated in the cell height, bounds as error bars); inset: non-dimensional Re(lambda_hat) vs
-k_hat.
+extrapolated in the cell height, bounds as error bars); third panel: non-dimensional
+Re(lambda_hat) vs k_hat.
 
 usage: sweep_models.py DATA.h5 OUT.png
 """
@@ -21,7 +21,9 @@ def main(data, png):
     with h5py.File(data, "r") as f:
         u0, h0 = float(f.attrs["u_mean"]), float(f.attrs["h0"])
         models = {m: {k: f[m][k][:] for k in f[m]} for m in ("depthavg", "twod") if m in f}
-    fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.6))
+    # (the non-dimensional panel on its own: as an inset it covered the shortest waves' points)
+    fig, (a, b, ins) = plt.subplots(1, 3, figsize=(16, 4.6),
+                                    gridspec_kw={"width_ratios": [3, 3, 2]})
     ref = next(iter(models.values()))
     order = np.argsort(ref["Lx"])
     k = 2 * np.pi / ref["Lx"][order]
@@ -45,15 +47,14 @@ def main(data, png):
     a.axhline(0, color="0.5", lw=0.8)
     a.set(xlabel="k = 2 pi / Lx [1/m]", ylabel="growth rate [1/s]", title="figure 13: growth rate")
     a.legend(fontsize=8, loc="lower left")
-    ins = a.inset_axes([0.62, 0.62, 0.35, 0.33])
     scale = h0 / u0
     ins.plot(ref["k_hat"][order], scale * ref["exact_growth_rate"][order], "k-")
     for m, d in models.items():
         mk, c, _ = marks[m]
         ins.plot(d["k_hat"], scale * d["growth_rate"], mk, color=c, ms=3)
-    ins.set_xlabel(r"$\hat k$", fontsize=8)
-    ins.set_ylabel(r"Re $\hat\lambda$", fontsize=8)
-    ins.tick_params(labelsize=7)
+    ins.axhline(0, color="0.5", lw=0.8)
+    ins.set(xlabel=r"$\hat k$", ylabel=r"Re $\hat\lambda$ (scaled by $h_0/\bar u$)",
+            title="(7.11), non-dimensional")
     b.set(xlabel="k [1/m]", ylabel="phase speed [m/s]", title="phase speed")
     b.legend(fontsize=8)
     fig.tight_layout()

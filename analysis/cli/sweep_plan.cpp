@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "analysis/cli/physics_warnings.hpp"
+#include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
 
 namespace granbench::cli {
@@ -153,10 +154,18 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
     spec.twod_settings.viscosity_passes = o.viscosity_passes;
     spec.twod_settings.frame_fraction = o.twod_frame;
     spec.twod_extrapolate = o.extrapolate;
-    if (o.extrapolate && o.resolution == "coarse")
-      throw UsageError(
-          "--extrapolate: not with --resolution coarse, whose half grid (7.5 cells per h0) is "
-          "below the deficit law's range; valid with --resolution default or fine");
+    if (o.extrapolate) {  // every point's half grid within the deficit law's range
+      for (const double Lx : spec.Lx) {
+        const double n = half_grid_cells_per_depth(point_twod_settings(spec, Lx), o.flow.h0);
+        if (n >= kGrowthDeficitFewestCellsPerDepth) continue;
+        std::ostringstream m;
+        m << "--extrapolate: not with --resolution " << o.resolution << ", whose half grid (" << n
+          << " cells per h0 at Lx = " << Lx << " m) is below the deficit law's range; valid with "
+          << "at least " << kGrowthDeficitFewestCellsPerDepth
+          << " there: --resolution default or fine";
+        throw UsageError(m.str());
+      }
+    }
     settings.update({{"frame_speed", o.depthavg.frame_speed},
                      {"resolution", o.resolution},
                      {"viscosity_passes", o.viscosity_passes},
@@ -199,7 +208,8 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
             twod_growth_accuracy_warning(base, dz, Lx, growth, point.domain_height(o.flow.h0))) {
       std::ostringstream named;
       named << "Lx = " << Lx << " m: " << *w;
-      if (!spec.twod_extrapolate && o.resolution != "coarse")
+      if (!spec.twod_extrapolate &&
+          half_grid_cells_per_depth(point, o.flow.h0) >= kGrowthDeficitFewestCellsPerDepth)
         named << "; or give --extrapolate, which runs the point again on half the cells across "
                  "the layer and extrapolates its growth to cells of no height";
       plan.warnings.push_back(named.str());

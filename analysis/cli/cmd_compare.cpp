@@ -21,6 +21,7 @@
 #include "analysis/cli/compare_options.hpp"
 #include "analysis/cli/compare_report.hpp"
 #include "analysis/cli/compare_saturated.hpp"
+#include "analysis/cli/extrapolation_report.hpp"
 #include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
@@ -67,14 +68,9 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
     throw UsageError("--extrapolate: not with --saturated, whose wave leaves the linear regime");
   if (const double n = half_grid_cells_per_depth(twod, chute.h0);
       o.extrapolate && n < kGrowthDeficitFewestCellsPerDepth) {
-    std::ostringstream m;
-    const int nz_needed = TwodSettings::multiple_of_16(static_cast<int>(std::ceil(
-        2.0 * kGrowthDeficitFewestCellsPerDepth * twod.domain_height(chute.h0) / chute.h0)));
-    m << "--extrapolate: half of this grid's cells across the layer, " << n
-      << " per h0, lie below the deficit law's range; valid with at least "
-      << kGrowthDeficitFewestCellsPerDepth
-      << " per h0 there: --resolution default or fine, or --nz " << nz_needed << " or more";
-    throw UsageError(m.str());
+    throw UsageError(too_few_cells_to_extrapolate(n) + ": --resolution default or fine, or --nz " +
+                     std::to_string(nz_for_extrapolation(twod.domain_height(chute.h0), chute.h0)) +
+                     " or more");
   }
   if (saturated.enabled)
     return run_compare_saturated(chute, depthavg, twod, o.output, saturated, warnings);

@@ -137,8 +137,10 @@ void add_run_command(CLI::App& app) {
   std::vector<std::string> depthavg_only{"--rtol", "--atol", "--bdf-order"};
   for (const auto& name : options_added(*sub, [&] { add_depthavg_options(*sub, *depthavg); }))
     depthavg_only.push_back(name);
-  const std::vector<std::string> twod_only =
-      options_added(*sub, [&] { add_twod_options(*sub, *twod); });
+  const std::vector<std::string> twod_only = options_added(*sub, [&] {
+    add_twod_options(*sub, *twod);
+    add_twod_extrapolate_option(*sub, *twod);
+  });
   sub->footer(help_footer(
       {"granbench run --model depthavg --angle 28.5 --h0 0.004 --Lx 0.08 --nx 512 --t-end 10",
        "granbench run --model twod --init eigenmode --a0 2e-5 --t-end 2 --out run.h5 --json",

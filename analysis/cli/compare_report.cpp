@@ -8,6 +8,7 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/extrapolation_report.hpp"
 #include "analysis/spectral/measurement.hpp"
 
 namespace granbench::cli {
@@ -74,19 +75,6 @@ void print_extrapolated(const TwodExtrapolation& e, const TheoryValue& ref) {
             << ")\n";
 }
 
-nlohmann::json extrapolation_json(const TwodExtrapolation& e, const TheoryValue& ref) {
-  if (!e.found()) return {{"growth_rate", nullptr}, {"reason", e.reason}};
-  return {
-      {"growth_rate", e.growth.value},
-      {"growth_rate_bounds", {e.growth.low, e.growth.high}},
-      {"growth_relative_error", (e.growth.value - ref.growth_rate) / std::fabs(ref.growth_rate)},
-      {"growth_rate_half_cells", e.growth_rate_half_cells},
-      {"half_cells_grid", {e.nx, e.nz}},
-      {"dz_ratio", e.dz_ratio},
-      {"wall_seconds", e.wall_seconds},
-      {"steps", e.steps}};
-}
-
 }  // namespace
 
 void print_table(const Comparison& c) {
@@ -143,9 +131,9 @@ nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
                             const std::vector<std::string>& warnings, const std::string& h5,
                             const std::string& png) {
   nlohmann::json twod = model_json(c.twod, c.twod_measured);
-  twod["extrapolated"] = c.twod_extrapolation
-                             ? extrapolation_json(*c.twod_extrapolation, c.theory.exact_2d)
-                             : nlohmann::json(nullptr);
+  twod["extrapolated"] = c.twod_extrapolation ? extrapolation_json(*c.twod_extrapolation,
+                                                                   c.theory.exact_2d.growth_rate)
+                                              : nlohmann::json(nullptr);
   return nlohmann::json(
       {{"Lx", c.chute.Lx},
        {"k_hat", c.theory.k_hat},

@@ -13,10 +13,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
 
+#include "analysis/cli/extrapolation_report.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
 #include "analysis/comparison/eigenmode_seed.hpp"
@@ -49,6 +51,64 @@ std::optional<twod::Checkpoint> read_restart(const std::string& path, const twod
   return c;
 }
 
+// --extrapolate's conditions, checked before the run: one wavelength in the domain, as the half
+// grid's case seeds it, and a half grid in the deficit law's range.
+void check_extrapolation(const RunOptions& o, const TwodOptions& mo) {
+  if (o.mode != 1)
+    throw UsageError(
+        "--extrapolate: needs --mode 1 (the run on half the cells seeds one "
+        "wavelength over Lx); valid value 1");
+  const TwodSettings fine = twod_run_settings(o, mo);
+  if (const double n = half_grid_cells_per_depth(fine, o.flow.h0);
+      n < kGrowthDeficitFewestCellsPerDepth)
+    throw UsageError(
+        too_few_cells_to_extrapolate(n) + ": --nz " +
+        std::to_string(nz_for_extrapolation(fine.domain_height(o.flow.h0), o.flow.h0)) +
+        " or more");
+}
+
+// After a completed run whose seeded wave was measured, the same case on half the cells across
+// the layer (sampled as the run was, the surface again mid-cell unless --Lz was given), with its
+// own progress line; otherwise no second run and the reason.
+TwodExtrapolation extrapolate(const RunOptions& o, const TwodOptions& mo, double dt_out,
+                              const Measurement& measured, const twod::RunResult& first,
+                              const SeededTheory& seeded, const std::atomic<bool>* stop) {
+  TwodExtrapolation e;
+  if (!first.completed()) {
+    e.reason = "the run did not complete";
+    return e;
+  }
+  if (std::isnan(seeded.phase_speed)) {
+    e.reason = "no unstable surface mode of the exact 2D theory to follow";
+    return e;
+  }
+  if (!measured.spectral.found()) {
+    e.reason = "no growth rate on the first grid";
+    return e;
+  }
+  ChuteCase c = chute_case(o);
+  c.dt_out = dt_out;
+  RunControl ctl;
+  ctl.stop = stop;
+  const bool show = progress_enabled(o.output);
+  if (show)
+    ctl.progress = [](const std::string&, double t, double t_end) {
+      std::cerr << "\r  twod on half the cells across the layer: t = " << std::fixed
+                << std::setprecision(3) << t << " / " << t_end << " s" << std::defaultfloat
+                << std::flush;
+    };
+  try {
+    e = extrapolate_twod_growth(c, twod_run_settings(o, mo), measured.spectral.growth_rate,
+                                seeded.phase_speed, ctl);
+  } catch (const std::exception& error) {
+    e = TwodExtrapolation{};
+    e.outcome = RunOutcome::Failed;
+    e.reason = std::string("the run on half the cells across the layer failed: ") + error.what();
+  }
+  if (show) std::cerr << "\n";
+  return e;
+}
+
 }  // namespace
 
 TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
@@ -64,6 +124,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
   if (auto w = twod_grid_cost_warning(grid.nx, grid.nz, grid.dx / grid.dz)) warnings.push_back(*w);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
+  if (mo.extrapolate) check_extrapolation(o, mo);
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so
   // a restart with the same options continues the first run's grids.
   RunSchedule schedule;
@@ -107,8 +168,15 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
       eigenmode ? SeededTheory{eigenmode->growth_rate(), eigenmode->phase_speed()} : SeededTheory{};
   if (eigenmode)
     if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate(),
-                                              grid.Lz))
+                                              grid.Lz)) {
+      if (!mo.extrapolate && o.mode == 1 &&
+          half_grid_cells_per_depth(twod_run_settings(o, mo), o.flow.h0) >=
+              kGrowthDeficitFewestCellsPerDepth)
+        *w +=
+            "; or give --extrapolate, which runs the wave again on half the cells across the "
+            "layer and extrapolates its growth to cells of no height";
       warnings.push_back(*w);
+    }
   Solver solver(grid, params,
                 restart ? restart->state
                         : make_initial_state(grid,
@@ -157,6 +225,11 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   report.json["warnings"] = warnings;
   report.json["message"] = message;
   report.json["eta_max"] = mo.settings.eta_max;
+  report.json["extrapolated"] = nullptr;  // without --extrapolate
+  if (mo.extrapolate) {
+    report.extrapolation = extrapolate(o, mo, schedule.dt_out, report.measured, res, seeded, stop);
+    report.json["extrapolated"] = extrapolation_json(*report.extrapolation, seeded.growth_rate);
+  }
   output->finish(res.series, run_status_name(res.status), message, report.json.dump());
   report.series = res.series;
   report.status = res.status;

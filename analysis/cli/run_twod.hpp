@@ -8,9 +8,11 @@
 #include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "analysis/cli/run_model.hpp"
+#include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/comparison/twod_settings.hpp"
 #include "analysis/spectral/measurement.hpp"
 #include "common/steady_state.hpp"
@@ -38,11 +40,21 @@ struct TwodOptions {
   std::string checkpoint;  // written on schedule and on SIGINT/SIGTERM; default <out>.checkpoint.h5
   double checkpoint_every = 1.0;  // simulated time between checkpoints [s]; 0: only at a stop
   std::string restart;            // continue from this checkpoint
+  // `run` only: after the run, the same wave on half the cells across the layer, and its growth
+  // extrapolated to cells of no height (analysis/comparison/twod_extrapolation.hpp)
+  bool extrapolate = false;
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
+// --extrapolate, an option of `run` alone (twod_options.cpp): the rollwave cases saturate, where
+// the deficit law of a linear wave does not hold.
+void add_twod_extrapolate_option(CLI::App& app, TwodOptions& o);
 
 // The chute case of `run`'s options (the flow, the domain length, the seed and run length).
 ChuteCase chute_case(const RunOptions& run);
+// The 2D settings of these options as compare and sweep would hold them (nx from --nx, the
+// domain height from --Lz, or 0 for the solver's mid-cell height): the run's, and through
+// half_cells_across those of an extrapolation's second run.
+TwodSettings twod_run_settings(const RunOptions& run, const TwodOptions& model);
 // The solver parameters of these options (twod_options.cpp), through the one builder of
 // twod_settings.hpp; UsageError naming the option when they are inconsistent. `Lz` receives the
 // domain height used.
@@ -56,6 +68,8 @@ struct TwodRunReport {
   Measurement measured;  // the measurement behind json's growth keys
   SurfaceSeries series;  // h(x, t) of the whole run (a restart's included)
   double Lz = 0.0;       // the domain height used [m]
+  // --extrapolate: the run on half the cells across the layer and the extrapolated growth
+  std::optional<TwodExtrapolation> extrapolation;
 };
 
 // Validates the options and paths (UsageError, before any work), runs the 2D model until t_end

@@ -95,6 +95,14 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
       ->check(CLI::ExistingFile);
 }
 
+void add_twod_extrapolate_option(CLI::App& app, TwodOptions& o) {
+  app.add_flag("--extrapolate", o.extrapolate,
+               "twod: after the run, run the same wave again on half the cells across the layer "
+               "and report its growth rate extrapolated to cells of no height (the measured "
+               "order 1.4, bounds from 1.3 and 1.7; docs/twod-validation.md §3); needs --mode 1 "
+               "and at least 15 cells per h0 on the half grid");
+}
+
 ChuteCase chute_case(const RunOptions& o) {
   ChuteCase c = o.flow.chute(o.Lx);
   c.a0 = o.a0;
@@ -113,14 +121,18 @@ twod::SolverParams twod_run_params(const RunOptions& o, const TwodOptions& mo, d
   if (!(mo.settings.eta_min < mo.settings.eta_max))
     throw UsageError("--eta-min: must be below --eta-max (" + std::to_string(mo.settings.eta_max) +
                      ")");
+  return twod_solver_params(chute_case(o), twod_run_settings(o, mo));
+}
+
+TwodSettings twod_run_settings(const RunOptions& o, const TwodOptions& mo) {
   TwodSettings settings = mo.settings;
   settings.nx = int(o.nx);
-  settings.Lz_over_h0 = Lz / o.flow.h0;
+  settings.Lz_over_h0 = mo.Lz > 0.0 ? mo.Lz / o.flow.h0 : 0.0;
   settings.mixing = *twod::viscosity_mixing_from_name(mo.mixing);  // checked by the option
   settings.consistent_momentum = mo.momentum_transport == "consistent";
   // The options were made before --threads was parsed; the thread count is this thread's now.
   settings.threads = twod::thread_count();
-  return twod_solver_params(chute_case(o), settings);
+  return settings;
 }
 
 }  // namespace granbench::cli

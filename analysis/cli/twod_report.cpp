@@ -72,6 +72,28 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
   return j;
 }
 
+namespace {
+
+// --extrapolate's line: the extrapolated growth, its bounds, the half grid's growth and cost, and
+// its deviation from the exact 2D theory (when there is one); or the reason there is none.
+void print_extrapolation(const TwodExtrapolation& e, const nlohmann::json& theory_growth) {
+  std::cout << "  extrapolated     ";
+  if (!e.found()) {
+    std::cout << "- 1/s  (not extrapolated: " << e.reason << ")\n";
+    return;
+  }
+  std::cout << e.growth.value << " 1/s (bounds " << e.growth.low << " to " << e.growth.high << "; "
+            << e.growth_rate_half_cells << " on " << e.nx << " x " << e.nz << " in " << std::fixed
+            << std::setprecision(1) << e.wall_seconds << " s wall)";
+  if (!theory_growth.is_null())
+    std::cout << std::setprecision(2) << std::showpos << ": "
+              << 100.0 * (e.growth.value / theory_growth.get<double>() - 1.0) << " %"
+              << std::noshowpos;
+  std::cout << std::defaultfloat << std::setprecision(6) << "\n";
+}
+
+}  // namespace
+
 void run_twod(const RunOptions& o, const TwodOptions& mo) {
   const InterruptGuard guard(InterruptGuard::Signals::IntAndTerm);
   const TwodRunReport r = run_twod_model(o, mo, guard.flag());
@@ -105,10 +127,11 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
       if (growth.found())
         std::cout << std::fixed << std::setprecision(2) << std::showpos << ": measured "
                   << 100.0 * (j.at("growth_rate").get<double>() / sigma - 1.0) << " %, "
-                  << 100.0 * (j.at("phase_speed").get<double>() / c - 1.0) << " %"
+                  << 100.0 * (j.at("phase_speed").get<double>() / c - 1.0) << " %" << std::noshowpos
                   << std::defaultfloat << std::setprecision(6);
       std::cout << "\n";
     }
+    if (r.extrapolation) print_extrapolation(*r.extrapolation, j.at("growth_rate_theory"));
     for (std::size_t i = 0; i < growth.modes.size(); ++i)
       if (i != growth.seeded)
         std::cout << "  other wave       growth " << growth.modes[i].growth_rate << " 1/s, speed "
@@ -126,6 +149,9 @@ void run_twod(const RunOptions& o, const TwodOptions& mo) {
               << j["illposed_fraction_max"].get<double>() << ")\n";
   }
   throw_unless_completed(r, guard);
+  if (r.extrapolation && r.extrapolation->outcome == RunOutcome::Interrupted)
+    throw CommandFailed("interrupted on half the cells across the layer; the run's output was kept",
+                        guard.exit_code());
 }
 
 void throw_unless_completed(const TwodRunReport& r, const InterruptGuard& guard) {

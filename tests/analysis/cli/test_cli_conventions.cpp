@@ -110,6 +110,14 @@ TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
   expect_refused("sweep --model depthavg --extrapolate --jobs 1",
                  "--extrapolate: does not apply to --model depthavg");
   EXPECT_FALSE(std::filesystem::exists(dir + "gb_conv_c.h5"));
+  const std::string run_quick = " --t-end 0.05 --quiet --out " + dir + "gb_conv_r.h5";
+  expect_refused("run --model twod --extrapolate --nz 16" + run_quick,
+                 "--extrapolate:", {"3.5 per h0", "--nz 64 or more"});
+  expect_refused("run --model twod --extrapolate --mode 2" + run_quick,
+                 "--extrapolate: needs --mode 1");
+  expect_refused("run --model depthavg --extrapolate" + run_quick,
+                 "--extrapolate: applies to --model twod only");
+  EXPECT_FALSE(std::filesystem::exists(dir + "gb_conv_r.h5"));
 }
 
 // run: an option of the other model is refused, not silently ignored (qa.md: sweep --model twod

@@ -47,6 +47,7 @@ SweepSpec shared_spec(const cases::CaseFile& f, const std::string& res, unsigned
     const GridPreset g = grid_preset(f.text("grid", res));
     s.twod_settings.nx = g.twod_nx;
     s.twod_settings.nz = g.twod_nz;
+    s.twod_settings.aimed_growth_deficit = g.twod_aimed_growth_deficit;
   } catch (const std::invalid_argument&) {
     throw cases::CaseFileError(f.path() + ": key 'grid' = '" + f.text("grid", res) +
                                "'; valid values {coarse,default,fine}");

@@ -43,11 +43,23 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   (void)o.flow.steady();  // a slope with no steady flow is an error on --angle
   if (chute.a0 >= chute.h0) throw UsageError("--a0: must be below h0; valid range (0, h0)");
   const GridPreset res = grid_preset(o.resolution);
+  // The exact theories first (about a second): the 2D growth sets the cells across the layer
+  // near the cutoff, the 2D eigenmode seeds the 2D run. A case without them is refused below,
+  // with the reason, before any run.
+  std::optional<Theories> theory;
+  try {
+    theory = exact_theories(chute);
+  } catch (const std::runtime_error&) {
+  }
   TwodSettings twod;
   twod.nx = res.twod_nx;
   twod.nx = o.nx > 0 ? o.nx : twod.cells_along(chute.Lx);  // the preset's, as sweep's points
   twod.nz = res.twod_nz;
-  twod.nz = o.nz > 0 ? o.nz : twod.cells_across(chute.Lx, chute.h0);  // as sweep's points
+  twod.aimed_growth_deficit = res.twod_aimed_growth_deficit;
+  twod.nz = o.nz > 0
+                ? o.nz
+                : twod.cells_across(chute.Lx, chute.steady(),
+                                    theory ? theory->exact_2d.growth_rate : NAN);  // as sweep's
   twod.viscosity_passes = o.viscosity_passes;
   twod.frame_fraction = o.twod_frame;
   // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of
@@ -101,11 +113,10 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   Comparison c;
   c.chute = chute;
   c.base = chute.steady();
-  // The exact theories first (about a second): the 2D eigenmode seeds the 2D run, and a case
-  // where the 2D linear stability has no surface mode (e.g. --Lx 1e9 --h0 29.1) is bad input,
-  // refused before any run.
+  // A case where the 2D linear stability has no surface mode (e.g. --Lx 1e9 --h0 29.1) is bad
+  // input, refused before any run.
   try {
-    c.theory = exact_theories(chute);
+    c.theory = theory ? *theory : exact_theories(chute);
   } catch (const std::runtime_error& e) {
     throw UsageError("--Lx: no 2D linear surface mode at k_hat = 2 pi h0/Lx = " +
                      std::to_string(2.0 * std::numbers::pi * chute.h0 / chute.Lx) + " (" +

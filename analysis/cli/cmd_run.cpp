@@ -6,6 +6,7 @@
 //
 // Model-independent options live in RunOptions (run_model.hpp); each model adds its own options
 // and has its own run_<model>.cpp. The model is chosen once, here.
+#include <cmath>
 #include <memory>
 #include <set>
 #include <string>
@@ -16,6 +17,7 @@
 #include "analysis/cli/help_footer.hpp"
 #include "analysis/cli/run_model.hpp"
 #include "analysis/cli/run_twod.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
 #include "common/failure_policy.hpp"
 
 namespace granbench::cli {
@@ -111,16 +113,30 @@ void refuse_options_of_other_model(const CLI::App& app, const std::vector<std::s
 // Without --nx or --nz (on the command line or in a --config file) the 2D model takes the grid
 // that compare and sweep give this wave: along x the preset's 160 cells per 8 cm, at least 160,
 // a multiple of 16 (TwodSettings::cells_along; 256 stays the depth-averaged default); across
-// the layer 64 cells, more for a wave under 7.5 h0 (cells_across). The options' shown defaults
-// become those values.
-void set_twod_grid_defaults(CLI::App& sub, RunOptions& run, TwodSettings& settings) {
+// the layer 64 cells, more for a wave under 7.5 h0 and more again near the 2D cutoff
+// (cells_across, with the wave's exact 2D growth). The options' shown defaults become those
+// values.
+void set_twod_grid_defaults(CLI::App& sub, RunOptions& run, TwodOptions& twod) {
   if (sub.count("--nx") == 0) {
-    run.nx = std::size_t(settings.cells_along(run.Lx));
+    run.nx = std::size_t(twod.settings.cells_along(run.Lx));
     sub.get_option("--nx")->default_str(std::to_string(run.nx));
   }
   if (sub.count("--nz") == 0) {
-    settings.nz = settings.cells_across(run.Lx / run.mode, run.flow.h0);
-    sub.get_option("--nz")->default_str(std::to_string(settings.nz));
+    const double wavelength = run.Lx / run.mode;
+    TwodSettings settings = twod.settings;
+    settings.Lz_over_h0 = twod.Lz > 0.0 ? twod.Lz / run.flow.h0 : 0.0;
+    try {
+      const SteadyState base = run.flow.steady();
+      Linear2DOptions quick;  // (the growth as compare's theory has it, without its check)
+      quick.N_check = 0;
+      const double growth =
+          linear2d::surface_eigenmode(base, run.flow.make_curve(), wavelength, quick).growth_rate();
+      twod.settings.nz = settings.cells_across(wavelength, base, growth);
+    } catch (const std::exception&) {
+      // no steady flow or no surface mode (the run refuses the first with the reason later)
+      twod.settings.nz = settings.cells_across(wavelength, run.flow.h0);
+    }
+    sub.get_option("--nz")->default_str(std::to_string(twod.settings.nz));
   }
 }
 
@@ -150,7 +166,7 @@ void add_run_command(CLI::App& app) {
   // are parsed, and shown so: --print-config and the run read the same values (the callback
   // below is not called under --print-config).
   sub->parse_complete_callback([sub, run, twod] {
-    if (parse_model(run->model) == Model::TwoD) set_twod_grid_defaults(*sub, *run, twod->settings);
+    if (parse_model(run->model) == Model::TwoD) set_twod_grid_defaults(*sub, *run, *twod);
   });
   sub->callback([sub, run, depthavg, twod, depthavg_only, twod_only] {
     check_run_options(*run);

@@ -79,7 +79,7 @@ TwodExtrapolation extrapolate(const RunOptions& o, const TwodOptions& mo, double
     return e;
   }
   if (std::isnan(seeded.phase_speed)) {
-    e.reason = "no unstable surface mode of the exact 2D theory to follow";
+    e.reason = "no surface mode of the exact 2D theory to follow";
     return e;
   }
   if (!measured.spectral.found()) {

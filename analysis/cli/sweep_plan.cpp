@@ -2,6 +2,7 @@
 #include "analysis/cli/sweep_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "analysis/cli/physics_warnings.hpp"
@@ -151,12 +152,14 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
     spec.depthavg_settings.nx = 256;
     spec.twod_settings.nx = grid_preset(o.resolution).twod_nx;
     spec.twod_settings.nz = grid_preset(o.resolution).twod_nz;
+    spec.twod_settings.aimed_growth_deficit = grid_preset(o.resolution).twod_aimed_growth_deficit;
     spec.twod_settings.viscosity_passes = o.viscosity_passes;
     spec.twod_settings.frame_fraction = o.twod_frame;
     spec.twod_extrapolate = o.extrapolate;
     if (o.extrapolate) {  // every point's half grid within the deficit law's range
       for (const double Lx : spec.Lx) {
-        const double n = half_grid_cells_per_depth(point_twod_settings(spec, Lx), o.flow.h0);
+        // (on the grid of the wavelength alone: a point's growth only adds cells)
+        const double n = half_grid_cells_per_depth(point_twod_settings(spec, Lx, NAN), o.flow.h0);
         if (n >= kGrowthDeficitFewestCellsPerDepth) continue;
         std::ostringstream m;
         m << "--extrapolate: not with --resolution " << o.resolution << ", whose half grid (" << n
@@ -175,7 +178,8 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"twod_nz", spec.twod_settings.nz},
                      {"t_end", spec.chute.t_end}});
     const double shortest = *std::min_element(spec.Lx.begin(), spec.Lx.end());
-    const TwodSettings at_shortest = point_twod_settings(spec, shortest);
+    // (the grid of the wavelength alone: the warnings below it are the wavelength's)
+    const TwodSettings at_shortest = point_twod_settings(spec, shortest, NAN);
     plan.warnings = twod_warnings(o.flow.steady(),
                                   at_shortest.domain_height(o.flow.h0) / at_shortest.nz, shortest);
     settings["warnings"] = plan.warnings;
@@ -183,7 +187,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
           << " at 8 cm (at least " << spec.twod_settings.nx << " cells along x, dx at most "
           << 1e3 * TwodSettings::reference_length / spec.twod_settings.nx
           << " mm; more cells across the layer for waves under "
-          << TwodSettings::longest_wave_to_refine << " h0)";
+          << TwodSettings::longest_wave_to_refine << " h0 and near the 2D cutoff)";
     if (o.extrapolate) title << ", extrapolated from half the cells across the layer";
   }
   plan.title = title.str();
@@ -196,13 +200,13 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
   const SteadyState base = o.flow.steady();
   const MuCurve curve = o.flow.make_curve();
   for (const double Lx : spec.Lx) {
-    const TwodSettings point = point_twod_settings(spec, Lx);
     double growth = 0.0;
     try {
       growth = linear2d::surface_eigenmode(base, curve, Lx).growth_rate();
     } catch (const std::exception&) {
       continue;  // no surface mode: the point reports that itself
     }
+    const TwodSettings point = point_twod_settings(spec, Lx, growth);
     const double dz = point.domain_height(o.flow.h0) / point.nz;
     if (auto w =
             twod_growth_accuracy_warning(base, dz, Lx, growth, point.domain_height(o.flow.h0))) {

@@ -56,6 +56,7 @@ struct DepthAvgSettings {
 struct GridPreset {
   int twod_nx, twod_nz;
   std::size_t depthavg_nx;
+  double twod_aimed_growth_deficit;  // TwodSettings::aimed_growth_deficit
 };
 GridPreset grid_preset(const std::string& name);
 

@@ -72,14 +72,15 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
 std::string seeded_run_command(const SweepSpec& spec, const SweepPoint& p) {
   ChuteCase c = spec.chute;
   c.Lx = p.Lx;
-  if (p.model == "twod") return twod_command_of(c, point_twod_settings(spec, p.Lx));
+  if (p.model == "twod")
+    return twod_command_of(c, point_twod_settings(spec, p.Lx, p.growth_rate_exact));
   return spec.depthavg_linear ? std::string() : depthavg_command_of(c, spec.depthavg_settings);
 }
 
 // A point from a seeded run of either model, measured like compare's (compare.hpp).
 void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
-  const TwodSettings twod = point_twod_settings(spec, c.Lx);
+  const TwodSettings twod = point_twod_settings(spec, c.Lx, p.theory.exact_2d.growth_rate);
   const ModelRun r =
       p.model == "twod" ? run_twod(c, twod, ctl) : run_depthavg(c, spec.depthavg_settings, ctl);
   MeasureOptions opt;
@@ -125,8 +126,9 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
 // leaves the extrapolation NaN and says why (a resume would only repeat it).
 void extrapolate_in_dz(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                        const RunControl& ctl) {
-  const TwodExtrapolation e = extrapolate_twod_growth(
-      c, point_twod_settings(spec, c.Lx), p.growth_rate, p.theory.exact_2d.phase_speed, ctl);
+  const TwodExtrapolation e =
+      extrapolate_twod_growth(c, point_twod_settings(spec, c.Lx, p.theory.exact_2d.growth_rate),
+                              p.growth_rate, p.theory.exact_2d.phase_speed, ctl);
   p.wall_seconds += e.wall_seconds;
   if (!e.found()) {
     p.message += (p.message.empty() ? "" : "; ") + ("not extrapolated: " + e.reason);
@@ -191,10 +193,10 @@ void sort_points(std::vector<SweepPoint>& points) {
 
 }  // namespace
 
-TwodSettings point_twod_settings(const SweepSpec& spec, double Lx) {
+TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_growth) {
   TwodSettings twod = spec.twod_settings;
   twod.nx = twod.cells_along(Lx);
-  twod.nz = twod.cells_across(Lx, spec.chute.h0);
+  twod.nz = twod.cells_across(Lx, spec.chute.steady(), exact_growth);
   twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
   return twod;
 }

@@ -80,9 +80,10 @@ struct SweepSpec {
 };
 
 // The 2D settings of the point of length Lx: the preset's cells along it (cells_along) and across
-// the layer for its wavelength (cells_across), and the --jobs workers sharing the 2D solver's
+// the layer for its wavelength and its exact 2D growth rate (cells_across; NaN: by the
+// wavelength alone, the fewest it can have), and the --jobs workers sharing the 2D solver's
 // threads (oversubscribed threads wait on each other). The one place a point's grid is made.
-TwodSettings point_twod_settings(const SweepSpec& spec, double Lx);
+TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_growth);
 
 // Ls from "A:B:N" (N points evenly spaced from A to B inclusive, 0 < A <= B, 1 <= N <= 10000);
 // throws std::invalid_argument.

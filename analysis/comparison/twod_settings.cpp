@@ -1,9 +1,25 @@
 // The 2D solver's parameters from a chute case and the 2D settings; see twod_settings.hpp.
 #include "analysis/comparison/twod_settings.hpp"
 
+#include "analysis/comparison/growth_deficit_law.hpp"
 #include "twod/run.hpp"
 
 namespace granbench {
+
+int TwodSettings::cells_across(double wavelength, const SteadyState& base,
+                               double exact_growth) const {
+  int n = cells_across(wavelength, base.h0);
+  if (!(exact_growth > 0.0)) return n;
+  const int most = multiple_of_16(static_cast<int>(std::ceil(max_law_refinement * nz)));
+  for (; n < most; n += 16) {
+    TwodSettings candidate = *this;
+    candidate.nz = n;  // (the domain's height follows nz when the surface is put mid-cell)
+    const double dz = candidate.domain_height(base.h0) / n;
+    if (expected_twod_growth_deficit(base, dz, wavelength) <= aimed_growth_deficit * exact_growth)
+      return n;
+  }
+  return n;  // the cap: the warnings say what is left (analysis/cli/physics_warnings.hpp)
+}
 
 twod::SolverParams twod_solver_params(const ChuteCase& c, const TwodSettings& s) {
   twod::SolverParams p;
@@ -57,7 +73,10 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           // How nz becomes the cells across the layer for a shorter wave (cells_across): 1, the
           // preset's nz refined for waves under 7.5 h0 (since 5 December); a sweep file without
           // it kept nz at every length, and its short points are not resumed on the new grids.
-          {"nz_rule", 1.0}};
+          // 2: and raised by the deficit law near the 2D cutoff, to aimed_growth_deficit of the
+          // exact growth (since 6 December); a file of rule 1 kept at most twice the preset's nz.
+          {"nz_rule", 2.0},
+          {"aimed_growth_deficit", s.aimed_growth_deficit}};
 }
 
 }  // namespace granbench

@@ -1,8 +1,9 @@
 // The default 2D grids give a wave shorter than 7.5 h0 more cells across the layer
 // (TwodSettings::cells_across): `run --model twod` without --nz, and `compare`, put 96 cells
 // (48 per h0) across the 2 cm wave of the section 7 case and 64 across the 8 cm one; an explicit
-// --nz is kept; along x `run` takes compare's count. End to end: the grid is read back from each
-// command's HDF5 output. Nearer the cutoff, where that grid is not enough, `run` warns.
+// --nz is kept; along x `run` takes compare's count. Nearer the cutoff the deficit law refines
+// further (up to four times the preset's cells across), and where even that is not enough `run`
+// warns. End to end: the grid is read back from each command's HDF5 output.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -43,6 +44,9 @@ TEST_F(ShortWaveGrid, RunRefinesAcrossTheLayerUnlessNzIsGiven) {
   EXPECT_EQ(recorded_cells(run + "--Lx 0.08 --mode 4", "nz"), 96.0);  // the wave, not the domain
   EXPECT_EQ(recorded_cells(run + "--Lx 0.08", "nz"), 64.0);
   EXPECT_EQ(recorded_cells(run + "--Lx 0.02 --nz 40", "nz"), 40.0);
+  // near the cutoff, by the deficit law, as compare (below)
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.015", "nz"), 256.0);
+  EXPECT_EQ(recorded_cells(run + "--Lx 0.06 --mode 4", "nz"), 256.0);
 }
 
 // Along x, `run --model twod` without --nx takes compare's and sweep's cells for the length (at
@@ -83,11 +87,16 @@ TEST_F(ShortWaveGrid, PrintConfigShowsTheGridRunTakes) {
             160.0);
 }
 
-// Near the cutoff the refined grid is not enough: `run` says so, in its JSON and on stderr, for
-// the 1.5 cm wave (its growth 0.267 1/s, the expected deficit 19 %), and not for the 2 cm one.
+// Near the cutoff even the deficit law's cap is not enough: `run` says so, in its JSON and on
+// stderr, for the 1.4 cm wave (its growth 0.069 1/s, the expected deficit 31 % on 256 cells
+// across), and not for the 2 cm one, nor for 1.5 cm, whose default grid the law refines to 256
+// cells across (19 % expected on the 128 of the wavelength's rule, 7.5 % on 256).
 TEST_F(ShortWaveGrid, RunWarnsOfASmallGrowthNearTheCutoff) {
   const std::string run = "run --model twod --nx 16 --t-end 1e-4 --checkpoint-every 0 --json ";
-  const auto near = run_granbench(run + "--Lx 0.015", "short_wave");
+  const auto at_15 = run_granbench(run + "--Lx 0.015", "short_wave");
+  ASSERT_EQ(at_15.code, 0) << at_15.err;
+  EXPECT_TRUE(nlohmann::json::parse(at_15.out)["warnings"].empty()) << at_15.out;
+  const auto near = run_granbench(run + "--Lx 0.014", "short_wave");
   ASSERT_EQ(near.code, 0) << near.err;
   const auto warnings = nlohmann::json::parse(near.out)["warnings"];
   ASSERT_EQ(warnings.size(), 1u) << warnings;
@@ -103,6 +112,10 @@ TEST_F(ShortWaveGrid, CompareRefinesAcrossTheLayerUnlessNzIsGiven) {
   EXPECT_EQ(recorded_cells(compare + "--Lx 0.02", "twod_nz"), 96.0);
   EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --resolution coarse", "twod_nz"), 48.0);
   EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --nz 40", "twod_nz"), 40.0);
+  // near the cutoff the deficit law's grid: the fewest cells across on which it expects 7.5 % of
+  // the growth (3/4 of 25 % on the coarse preset), at most four times the preset's
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015", "twod_nz"), 256.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015 --resolution coarse", "twod_nz"), 128.0);
 }
 
 }  // namespace

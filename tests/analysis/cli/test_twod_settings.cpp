@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "analysis/cli/run_twod.hpp"
+#include "analysis/comparison/growth_deficit_law.hpp"
 #include "analysis/comparison/run_command.hpp"
+#include "analysis/linear2d/eigenmode.hpp"
 
 namespace granbench::cli {
 namespace {
@@ -58,6 +61,52 @@ TEST(TwodSettings, ShortWavesGetMoreCellsAcrossTheLayer) {
   s.nz = 64;
   s.nz = s.cells_across(0.02, h0);
   EXPECT_NEAR(s.domain_height(h0) / s.nz * 47.5, h0, 1e-15);
+}
+
+// Near the 2D cutoff the deficit law raises nz to the fewest cells (a multiple of 16) on which it
+// expects at most aimed_growth_deficit of the exact 2D growth, at most four times the preset's;
+// every wave the law already trusts on the wavelength's grid keeps it.
+TEST(TwodSettings, NearTheCutoffTheDeficitLawAddsCellsAcrossTheLayer) {
+  auto law_grid = [](double angle, double h0, double Lx, int preset_nz, double aim) {
+    ChuteCase c;
+    c.angle_deg = angle;
+    c.h0 = h0;
+    const SteadyState base = c.steady();
+    const double growth = linear2d::surface_eigenmode(base, c.make_curve(), Lx).growth_rate();
+    TwodSettings s;
+    s.nz = preset_nz;
+    s.aimed_growth_deficit = aim;
+    const int n = s.cells_across(Lx, base, growth);
+    auto expected_share = [&](int nz) {
+      TwodSettings t = s;
+      t.nz = nz;
+      return expected_twod_growth_deficit(base, t.domain_height(h0) / nz, Lx) / growth;
+    };
+    const int by_wavelength = s.cells_across(Lx, h0);
+    EXPECT_EQ(n % 16, 0);
+    EXPECT_GE(n, by_wavelength);
+    EXPECT_LE(n, 4 * preset_nz);
+    if (n > by_wavelength && n < 4 * preset_nz) {  // the fewest that meet the aim
+      EXPECT_LE(expected_share(n), aim) << Lx;
+      EXPECT_GT(expected_share(n - 16), aim) << Lx;
+    }
+    EXPECT_EQ(s.cells_across(Lx, base, NAN), by_wavelength);
+    EXPECT_EQ(s.cells_across(Lx, base, -1.0), by_wavelength);
+    return n;
+  };
+  // section 7 (28.5 degrees, 4 mm; cutoff near 1.38 cm), the default preset
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.08, 64, 0.075), 64);
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.03, 64, 0.075), 64);
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.025, 64, 0.075), 80);
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.02, 64, 0.075), 96);  // 6.4 % expected: kept
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.016, 64, 0.075), 176);
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.015, 64, 0.075), 256);  // 19.5 % expected on 128
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.014, 64, 0.075), 256);  // the cap
+  // the coarse preset aims at 3/4 of its 25 %
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.015, 32, 0.1875), 128);
+  // 28 degrees, 5 mm (cutoff near 1.75 cm): 2 cm was 12.2 % under on 128 cells
+  EXPECT_EQ(law_grid(28.0, 5e-3, 0.02, 64, 0.075), 192);
+  EXPECT_EQ(law_grid(28.0, 5e-3, 0.025, 64, 0.075), 96);
 }
 
 TEST(TwodSettings, RecordedRunCommandRebuildsTheSameSolverParameters) {

@@ -10,7 +10,9 @@
 //    section 7 case's wave of 5 h0 is 11 % under the theory, its slow branch too
 //    (docs/twod-validation.md §3);
 //  - the exact 2D growth rate is small against the error the grid is expected to carry (near a
-//    cutoff, where the growth falls to zero): twod_growth_accuracy_warning.
+//    cutoff, where the growth falls to zero): twod_growth_accuracy_warning. The default grids
+//    refine there by the same law (TwodSettings::cells_across with the growth), up to four times
+//    the preset's cells across, so on them it names only the waves nearest the cutoff.
 // And one about cost, twod_grid_cost_warning: a grid the pressure multigrid cannot coarsen.
 #pragma once
 

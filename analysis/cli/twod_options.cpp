@@ -22,7 +22,8 @@ std::vector<std::string> mixing_names() {
 void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.settings.nz,
                  "twod: cells along z, in [4, 4096]; default 64, and for a wave (Lx / mode) under "
-                 "7.5 h0 up to twice that, as compare and sweep")
+                 "7.5 h0 up to twice that, near the 2D cutoff up to four times (the deficit "
+                 "law's grid for 7.5 % of the growth), as compare and sweep")
       ->check(count_range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,

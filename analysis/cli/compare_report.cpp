@@ -22,6 +22,7 @@ nlohmann::json model_json(const ModelRun& r, const Measurement& m) {
             {"completed", r.outcome == RunOutcome::Completed},
             {"run_command", r.run_command}});
   if (!r.message.empty()) j["message"] = r.message;
+  j["cells"] = r.model == "twod" ? nlohmann::json{r.nx, r.nz} : nlohmann::json{r.nx};
   if (r.model == "twod") {
     j["I_range"] = {r.I_min, r.I_max};
     j["illposed_fraction"] = r.illposed_fraction;
@@ -115,7 +116,8 @@ void print_table(const Comparison& c) {
                 << ", last fifth), amplitude " << m->final_amplitude * 1e3 << " mm\n";
   }
   std::cout << std::setprecision(1) << "\n  runs: depthavg " << c.depthavg.wall_seconds
-            << " s wall, twod " << c.twod.wall_seconds << " s wall (" << c.twod.steps
+            << " s wall (" << c.depthavg.nx << " cells), twod " << c.twod.wall_seconds
+            << " s wall (" << c.twod.nx << " x " << c.twod.nz << " cells, " << c.twod.steps
             << " steps), 2D mass error " << std::scientific << std::setprecision(1)
             << c.twod.mass_error << std::fixed << ", I in [" << std::setprecision(3) << c.twod.I_min
             << ", " << c.twod.I_max << "], ill-posed fraction " << c.twod.illposed_fraction << "\n";

@@ -104,6 +104,7 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   m.seeded_growth_rate = exact.growth_rate;
   m.dt_out = out.dt_out;
   m.run_command = depthavg_run_command(c, s, out.dt_out);
+  m.nx = static_cast<int>(s.nx);
   return m;
 }
 
@@ -180,6 +181,8 @@ ModelRun run_twod_alongside(const ChuteCase& c, const TwodSettings& s, const Run
   m.illposed_fraction = rs.illposed_fraction;
   m.dt_out = schedule.dt_out;
   m.run_command = twod_run_command(c, s, schedule.dt_out);
+  m.nx = s.nx;
+  m.nz = s.nz;
   return m;
 }
 

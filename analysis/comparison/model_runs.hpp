@@ -36,6 +36,7 @@ struct ModelRun {
   double seeded_growth_rate = 0.0;  // the theory's growth rate of the seeded mode, if seeded
   double dt_out = 0.0;              // sampling interval of the series [s]
   std::string run_command;  // `granbench run ...` that reproduces this run (run_command.hpp)
+  int nx = 0, nz = 0;       // the grid's cells (nz: 2D only), which compare and sweep choose
 };
 
 struct DepthAvgSettings {

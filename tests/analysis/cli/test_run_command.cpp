@@ -38,6 +38,9 @@ TEST(RunCommand, EachModelsRunCommandReproducesItsGrowthRateAndPhaseSpeed) {
       "run_command");
   ASSERT_EQ(c.code, 0) << c.err;
   const auto jc = nlohmann::json::parse(c.out);
+  // the grids the runs took, as given
+  EXPECT_EQ(jc["depthavg"]["cells"], nlohmann::json({64}));
+  EXPECT_EQ(jc["twod"]["cells"], nlohmann::json({32, 16}));
   for (const std::string model : {"depthavg", "twod"}) {
     const auto& m = jc[model];
     ASSERT_TRUE(m["run_command"].is_string()) << model;

@@ -37,6 +37,22 @@ nlohmann::json extrapolated_json(const SweepPoint& p) {
           {"dz_ratio", p.dz_ratio}};
 }
 
+// The run's cells: [nx] for the depth-averaged model, [nx, nz] for the 2D one, null where the
+// point has none (not run).
+nlohmann::json cells_json(const SweepPoint& p) {
+  if (std::isnan(p.cells_x)) return nullptr;
+  const auto nx = std::lround(p.cells_x);
+  return std::isnan(p.cells_z) ? nlohmann::json{nx} : nlohmann::json{nx, std::lround(p.cells_z)};
+}
+
+// The same as text for the table: "256", "160x256", or "-".
+std::string cells_text(const SweepPoint& p) {
+  if (std::isnan(p.cells_x)) return "-";
+  std::string t = std::to_string(std::lround(p.cells_x));
+  if (!std::isnan(p.cells_z)) t += "x" + std::to_string(std::lround(p.cells_z));
+  return t;
+}
+
 bool any_extrapolated(const std::vector<SweepPoint>& points) {
   return std::any_of(points.begin(), points.end(),
                      [](const SweepPoint& p) { return !std::isnan(p.growth_rate_extrapolated); });
@@ -64,6 +80,7 @@ nlohmann::json point_json(const SweepPoint& p) {
       {"window", {number_or_null(p.window_start), number_or_null(p.window_end)}},
       {"fit_r2", number_or_null(p.fit_r2)},
       {"steps", p.steps},
+      {"cells", cells_json(p)},
       {"mass_error", number_or_null(p.mass_error)},
       {"wall_seconds", p.wall_seconds},
       {"completed", p.completed},
@@ -79,7 +96,8 @@ void print_table(const std::vector<SweepPoint>& points, const std::string& title
   std::cout << title << "\n"
             << std::setw(10) << "model" << std::setw(9) << "Lx [m]" << std::setw(9) << "k_hat"
             << std::setw(12) << "growth" << std::setw(12) << "theory" << std::setw(10) << "rel.err"
-            << std::setw(11) << "speed" << std::setw(11) << "theory" << std::setw(10) << "rel.err";
+            << std::setw(11) << "speed" << std::setw(11) << "theory" << std::setw(10) << "rel.err"
+            << std::setw(10) << "cells";
   const bool extrapolated = any_extrapolated(points);
   if (extrapolated)
     std::cout << std::setw(12) << "extrap." << std::setw(10) << "rel.err" << std::setw(22)
@@ -92,7 +110,8 @@ void print_table(const std::vector<SweepPoint>& points, const std::string& title
               << relative_error(p.growth_rate, p.growth_rate_exact) << std::setprecision(5)
               << std::setw(11) << p.phase_speed << std::setw(11) << p.phase_speed_exact
               << std::setprecision(2) << std::setw(10)
-              << relative_error(p.phase_speed, p.phase_speed_exact);
+              << relative_error(p.phase_speed, p.phase_speed_exact) << std::setw(10)
+              << cells_text(p);
     if (extrapolated && !std::isnan(p.growth_rate_extrapolated)) {
       std::ostringstream bounds;
       bounds << std::setprecision(5) << "[" << p.growth_rate_extrapolated_low << ", "

@@ -63,6 +63,7 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.steps = static_cast<double>(r.stats.steps);
   p.mass_error = r.mass_error;
   p.wall_seconds = r.wall_seconds;
+  p.cells_x = static_cast<double>(spec.depthavg_linear->nx);
   p.completed = r.ok;
   p.message = r.message;
 }
@@ -113,6 +114,8 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
   p.steps = static_cast<double>(r.steps);
   p.mass_error = r.mass_error;
   p.wall_seconds = r.wall_seconds;
+  p.cells_x = r.nx;
+  if (p.model == "twod") p.cells_z = r.nz;
   p.completed = r.outcome == RunOutcome::Completed;
   p.message = r.message;
   p.run_command = r.run_command;

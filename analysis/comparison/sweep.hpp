@@ -41,6 +41,9 @@ struct SweepPoint {
   double steps = 0.0;                                       // time steps of the run
   double mass_error = 0.0;                                  // relative
   double wall_seconds = 0.0;                                // of the point's runs
+  // The cells of the point's run along x and, for the 2D model, across the layer (NaN: none),
+  // which the grid rules choose per length (TwodSettings::cells_along, cells_across)
+  double cells_x = NAN, cells_z = NAN;
   // With SweepSpec::twod_extrapolate, a 2D point runs again on half the cells across the layer,
   // and its growth rate is extrapolated to cells of no height (growth_deficit_law.hpp); NaN
   // otherwise.

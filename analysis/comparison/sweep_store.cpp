@@ -71,6 +71,8 @@ const char* const kColumns[] = {"Lx",
                                 "growth_rate_extrapolated",
                                 "growth_rate_extrapolated_low",
                                 "growth_rate_extrapolated_high",
+                                "cells_x",
+                                "cells_z",
                                 "completed"};
 constexpr std::size_t kWidth = std::size(kColumns);
 
@@ -99,7 +101,9 @@ std::vector<double*> fields(SweepPoint& p) {
           &p.dz_ratio,
           &p.growth_rate_extrapolated,
           &p.growth_rate_extrapolated_low,
-          &p.growth_rate_extrapolated_high};
+          &p.growth_rate_extrapolated_high,
+          &p.cells_x,
+          &p.cells_z};
 }
 std::vector<double> row(SweepPoint p) {
   std::vector<double> r;
@@ -213,7 +217,7 @@ std::vector<SweepPoint> read_sweep(const std::string& path) {
     if (!h5_has(path, g + "Lx")) continue;
     std::vector<std::vector<double>> cols;
     const std::size_t n = h5_read_doubles(path, g + "Lx").size();
-    // (a column added since the file was written reads as NaN: the extrapolation's)
+    // (a column added since the file was written reads as NaN: the extrapolation's, the cells)
     for (const char* c : kColumns)
       cols.push_back(h5_has(path, g + c) ? h5_read_doubles(path, g + c)
                                          : std::vector<double>(n, NAN));

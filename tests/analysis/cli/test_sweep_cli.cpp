@@ -50,12 +50,14 @@ TEST(SweepCli, ResumesFromTheOutputFileAndRunsOnlyTheNewPoints) {
   EXPECT_EQ(second["points_resumed"], 2);
   const auto a = by_Lx(first), b = by_Lx(second);
   ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b.at(60000)["cells"], nlohmann::json({64}));  // the depth-averaged run's cells
   EXPECT_FALSE(b.at(60000)["resumed"].get<bool>());
   for (long L : {40000L, 80000L}) {
     // Kept, not re-run: the same numbers, the first run's wall time included.
     EXPECT_TRUE(b.at(L)["resumed"].get<bool>()) << L;
     EXPECT_EQ(b.at(L)["growth_rate"], a.at(L)["growth_rate"]) << L;
     EXPECT_EQ(b.at(L)["wall_seconds"], a.at(L)["wall_seconds"]) << L;
+    EXPECT_EQ(b.at(L)["cells"], nlohmann::json({64})) << L;
   }
   // The same file with another grid: refused, not mixed in.
   const auto r = run_granbench("sweep --model depthavg --nx 96 --Lx 0.04:0.08:3 --out " + out,

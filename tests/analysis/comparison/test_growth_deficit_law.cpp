@@ -83,5 +83,10 @@ TEST(GrowthDeficitLaw, ASweepPointExtrapolatedComesNearerTheTheory) {
   ASSERT_EQ(stored.size(), 1u);
   EXPECT_EQ(stored[0].growth_rate_extrapolated, p.growth_rate_extrapolated);
   EXPECT_EQ(stored[0].growth_rate_half_cells, p.growth_rate_half_cells);
+  // the point's grid, as the rules gave it and as stored
+  EXPECT_EQ(p.cells_x, 160.0);
+  EXPECT_EQ(p.cells_z, 64.0);
+  EXPECT_EQ(stored[0].cells_x, 160.0);
+  EXPECT_EQ(stored[0].cells_z, 64.0);
   std::filesystem::remove(spec.out);
 }

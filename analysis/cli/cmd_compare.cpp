@@ -126,10 +126,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
                                             twod.domain_height(chute.h0))) {
     const bool can_extrapolate =
         half_grid_cells_per_depth(twod, chute.h0) >= kGrowthDeficitFewestCellsPerDepth;
-    if (!o.extrapolate && can_extrapolate)
-      *w +=
-          "; or give --extrapolate, which runs the 2D model again on half the cells across the "
-          "layer and extrapolates its growth to cells of no height";
+    if (!o.extrapolate && can_extrapolate) *w += extrapolate_suggestion("the 2D model");
     warnings.push_back(*w);
   }
   print_warnings(warnings);  // once every check has passed

@@ -34,4 +34,10 @@ std::string too_few_cells_to_extrapolate(double half_cells_per_depth) {
   return m.str();
 }
 
+std::string extrapolate_suggestion(const std::string& subject) {
+  return "; or give --extrapolate, which runs " + subject +
+         " again on half the cells across the layer and extrapolates its growth to cells of no "
+         "height";
+}
+
 }  // namespace granbench::cli

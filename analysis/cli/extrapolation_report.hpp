@@ -22,4 +22,8 @@ int nz_for_extrapolation(double domain_height, double h0);
 // layer, n per h0, lie below the deficit law's range; valid with at least 15 per h0 there".
 std::string too_few_cells_to_extrapolate(double half_cells_per_depth);
 
+// What the small-growth warning adds where --extrapolate was not given and would apply: "; or
+// give --extrapolate, which runs <subject> again on half the cells across the layer and ...".
+std::string extrapolate_suggestion(const std::string& subject);
+
 }  // namespace granbench::cli

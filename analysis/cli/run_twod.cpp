@@ -67,9 +67,10 @@ void check_extrapolation(const RunOptions& o, const TwodOptions& mo) {
         " or more");
 }
 
-// After a completed run whose seeded wave was measured, the same case on half the cells across
-// the layer (sampled as the run was, the surface again mid-cell unless --Lz was given), with its
-// own progress line; otherwise no second run and the reason.
+// After a completed run whose seeded wave was measured (extrapolate_twod_growth says so when it
+// was not, without a second run), the same case on half the cells across the layer (sampled as the
+// run was, the surface again mid-cell unless --Lz was given), with its own progress line; otherwise
+// no second run and the reason.
 TwodExtrapolation extrapolate(const RunOptions& o, const TwodOptions& mo, double dt_out,
                               const Measurement& measured, const twod::RunResult& first,
                               const SeededTheory& seeded, const std::atomic<bool>* stop) {
@@ -80,10 +81,6 @@ TwodExtrapolation extrapolate(const RunOptions& o, const TwodOptions& mo, double
   }
   if (std::isnan(seeded.phase_speed)) {
     e.reason = "no surface mode of the exact 2D theory to follow";
-    return e;
-  }
-  if (!measured.spectral.found()) {
-    e.reason = "no growth rate on the first grid";
     return e;
   }
   ChuteCase c = chute_case(o);
@@ -172,9 +169,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
       if (!mo.extrapolate && o.mode == 1 &&
           half_grid_cells_per_depth(twod_run_settings(o, mo), o.flow.h0) >=
               kGrowthDeficitFewestCellsPerDepth)
-        *w +=
-            "; or give --extrapolate, which runs the wave again on half the cells across the "
-            "layer and extrapolates its growth to cells of no height";
+        *w += extrapolate_suggestion("the wave");
       warnings.push_back(*w);
     }
   Solver solver(grid, params,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "analysis/cli/extrapolation_report.hpp"
 #include "analysis/cli/physics_warnings.hpp"
 #include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
@@ -217,8 +218,7 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
       named << "Lx = " << Lx << " m: " << *w;
       if (!spec.twod_extrapolate &&
           half_grid_cells_per_depth(point, o.flow.h0) >= kGrowthDeficitFewestCellsPerDepth)
-        named << "; or give --extrapolate, which runs the point again on half the cells across "
-                 "the layer and extrapolates its growth to cells of no height";
+        named << extrapolate_suggestion("the point");
       plan.warnings.push_back(named.str());
     }
   }

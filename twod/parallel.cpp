@@ -33,7 +33,7 @@ ThreadTeam& team_of_this_thread(int threads) {
 void run_loop(int n, Schedule schedule, IndexBody body) {
   const int threads = thread_count();
   if (n > 1 && threads > 1 && !ThreadTeam::inside_a_loop())
-    team_of_this_thread(threads).run(n, schedule, body);
+    team_of_this_thread(threads).run(n, schedule, body, body.identity());
   else
     for (int i = 0; i < n; ++i) body(i);
 }
@@ -68,14 +68,12 @@ void parallel_for_interleaved(int n, IndexBody body) {
 }
 
 void parallel_for_ranges(int n, RangeBody body) {
-  const int threads = std::min(thread_count(), std::max(n, 1));
-  if (threads == 1 || ThreadTeam::inside_a_loop()) {
+  const int threads = thread_count();
+  if (threads == 1 || n <= 1 || ThreadTeam::inside_a_loop()) {
     body(0, n);
     return;
   }
-  team_of_this_thread(threads).run(threads, Schedule::Contiguous, [&](int t) {
-    body(int(long(n) * t / threads), int(long(n) * (t + 1) / threads));
-  });
+  team_of_this_thread(threads).run_ranges(n, body, body.identity());
 }
 
 namespace {

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cstdint>
 #include <type_traits>
 #include <vector>
 
@@ -27,11 +28,12 @@ int thread_count();
 // Set it for the calling thread (n >= 1).
 void set_thread_count(int n);
 
-// How parallel_for shares an index range among the threads.
+// How parallel_for shares an index range among the threads. The shares' sizes follow each
+// thread's measured speed at that loop, equal at first (thread_team.hpp, share_balance.hpp).
 enum class Schedule {
-  Contiguous,   // each thread one contiguous block (OpenMP's static schedule)
-  Interleaved,  // thread t takes t, t + T, t + 2T, ... (balances rows whose work varies with
-                // height)
+  Contiguous,   // each thread one contiguous block
+  Interleaved,  // each thread indices spread evenly over the whole range (balances rows whose
+                // work varies with height)
 };
 
 // A non-owning reference to a callable body(Args...), the body of a parallel loop (a plain
@@ -45,6 +47,9 @@ class BodyRef {
       : object_(const_cast<void*>(static_cast<const void*>(&f))),
         call_([](void* o, Args... a) { (*static_cast<std::remove_reference_t<F>*>(o))(a...); }) {}
   void operator()(Args... a) const { call_(object_, a...); }
+  // The body's code, the same for every call of one loop (a thread team balances its shares
+  // per loop with it).
+  std::uintptr_t identity() const { return reinterpret_cast<std::uintptr_t>(call_); }
 
  private:
   void* object_;
@@ -59,8 +64,8 @@ using RangeBody = BodyRef<int, int>;  // body(begin, end)
 void parallel_for(int n, bool parallel, IndexBody body);
 // The same with interleaved shares, always threaded when more than one thread is set.
 void parallel_for_interleaved(int n, IndexBody body);
-// body(begin, end) once per thread, over its contiguous share of [0, n) (body(0, n) on one
-// thread): for element-wise loops, whose inner loop the compiler vectorises (a call per element
+// body(begin, end) once per thread with a non-empty contiguous share of [0, n) (body(0, n) on
+// one thread): for element-wise loops, whose inner loop the compiler vectorises (a call per element
 // through IndexBody would not be).
 void parallel_for_ranges(int n, RangeBody body);
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -26,7 +27,14 @@ inline void cpu_relax() {
 
 }  // namespace
 
-ThreadTeam::ThreadTeam(int size) : size_(size) {
+ThreadTeam::ThreadTeam(int size)
+    : size_(size),
+      bounds_(std::size_t(std::max(size, 1)) + 1),
+      cumulative_(std::size_t(std::max(size, 1)) + 1),
+      balance_(std::max(size, 1)),
+      records_(std::size_t(std::max(size, 1))),
+      counts_(std::size_t(std::max(size, 1))),
+      ticks_(std::size_t(std::max(size, 1))) {
   if (size < 1) throw std::invalid_argument("ThreadTeam: need size >= 1");
   workers_.reserve(std::size_t(size - 1));
   for (int m = 1; m < size; ++m) workers_.emplace_back([this, m] { worker_loop(m); });
@@ -42,27 +50,74 @@ ThreadTeam::~ThreadTeam() {
   for (std::thread& t : workers_) t.join();
 }
 
-ThreadTeam::Share ThreadTeam::share(int member) const {
-  if (schedule_ == Schedule::Interleaved) return {member, n_, size_};
-  // contiguous blocks, the first n % size members one index longer (OpenMP's static schedule)
-  const int q = n_ / size_, r = n_ % size_;
-  const int begin = member * q + std::min(member, r);
-  return {begin, begin + q + (member < r ? 1 : 0), 1};
+void ThreadTeam::set_bounds() {
+  const int n = n_;
+  if (n < size_) {  // one index each for the first n members
+    for (int m = 0; m <= size_; ++m) bounds_[std::size_t(m)] = std::min(m, n);
+    return;
+  }
+  // every member at least one index, so that each is timed and the shares can move back
+  bounds_[0] = 0;
+  for (int m = 1; m < size_; ++m) {
+    int b = int(std::lround(n * cumulative_[std::size_t(m)]));
+    b = std::max(b, bounds_[std::size_t(m) - 1] + 1);
+    bounds_[std::size_t(m)] = std::min(b, n - (size_ - m));
+  }
+  bounds_[std::size_t(size_)] = n;
 }
 
 void ThreadTeam::run_share(int member) noexcept {
+  const std::uint64_t start = ShareBalance::ticks_now();
+  int count = 0;
   try {
-    const Share s = share(member);
-    for (int i = s.begin; i < s.end; i += s.step) (*body_)(i);
+    const std::size_t m = std::size_t(member);
+    if (range_body_ != nullptr || schedule_ == Schedule::Contiguous) {
+      const int begin = bounds_[m], end = bounds_[m + 1];
+      count = end - begin;
+      if (range_body_ != nullptr) {
+        if (begin < end) (*range_body_)(begin, end);
+      } else {
+        for (int i = begin; i < end; ++i) (*body_)(i);
+      }
+    } else {
+      // interleaved: index i belongs to the member whose interval holds frac(i g), g the golden
+      // ratio's fractional part (a sequence that fills [0, 1) evenly)
+      constexpr double kGolden = 0.6180339887498949;
+      const double low = cumulative_[m], high = member + 1 == size_ ? 2.0 : cumulative_[m + 1];
+      for (int i = 0; i < n_; ++i) {
+        const double x = i * kGolden - std::floor(i * kGolden);
+        if (x >= low && x < high) {
+          (*body_)(i);
+          ++count;
+        }
+      }
+    }
   } catch (...) {
     if (!has_error_.exchange(true)) error_ = std::current_exception();
   }
+  records_[std::size_t(member)].count = count;
+  records_[std::size_t(member)].ticks = ShareBalance::ticks_now() - start;
 }
 
-void ThreadTeam::run(int n, Schedule schedule, IndexBody body) {
+void ThreadTeam::run(int n, Schedule schedule, IndexBody body, std::uintptr_t site) {
   n_ = n;
   schedule_ = schedule;
   body_ = &body;
+  range_body_ = nullptr;
+  run_loop(site);
+}
+
+void ThreadTeam::run_ranges(int n, RangeBody body, std::uintptr_t site) {
+  n_ = n;
+  schedule_ = Schedule::Contiguous;
+  body_ = nullptr;
+  range_body_ = &body;
+  run_loop(site);
+}
+
+void ThreadTeam::run_loop(std::uintptr_t site) {
+  const int slot = balance_.shares(site, n_, cumulative_.data());
+  set_bounds();
   in_team_loop = true;
   pending_.store(size_ - 1, std::memory_order_relaxed);
   // seq_cst, paired with the worker's sleepers_ increment: either we see it and wake the worker,
@@ -73,8 +128,8 @@ void ThreadTeam::run(int n, Schedule schedule, IndexBody body) {
     wake_.notify_all();
   }
   run_share(0);
-  // The workers' shares are as long as ours; when the team shares the machine with other
-  // threads (compare runs both models at once), let them have the core now and then.
+  // When the team shares the machine with other threads (compare runs both models at once), let
+  // them have the core now and then.
   for (unsigned spins = 0; pending_.load(std::memory_order_acquire) != 0; ++spins) {
     if (spins % 4096 == 4095)
       std::this_thread::yield();
@@ -82,7 +137,13 @@ void ThreadTeam::run(int n, Schedule schedule, IndexBody body) {
       cpu_relax();
   }
   body_ = nullptr;
+  range_body_ = nullptr;
   in_team_loop = false;
+  for (std::size_t m = 0; m < records_.size(); ++m) {
+    counts_[m] = records_[m].count;
+    ticks_[m] = records_[m].ticks;
+  }
+  balance_.record(slot, counts_.data(), ticks_.data());
   if (has_error_.load(std::memory_order_relaxed)) {
     has_error_ = false;
     std::rethrow_exception(std::exchange(error_, nullptr));

@@ -8,9 +8,10 @@
 // its workers spinning between loops for a short while, then lets them sleep (so an idle solver
 // does not hold a core), and hands each loop out by bumping one counter.
 //
-// Each member always runs the same share of an index range (contiguous blocks like OpenMP's
-// static schedule, or every size()-th index), and the loops of twod/ write disjoint data, so
-// results do not depend on which thread ran what.
+// A loop's shares follow the members' measured speeds at that loop (share_balance.hpp): equal at
+// first, then in proportion to how fast each member got through its share on earlier calls. The
+// loops of twod/ write disjoint data and compute each index by the same arithmetic whoever runs
+// it, so results do not depend on which thread ran what, nor on the shares.
 #pragma once
 
 #include <atomic>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "twod/parallel.hpp"
+#include "twod/share_balance.hpp"
 
 namespace granbench::twod {
 
@@ -36,28 +38,46 @@ class ThreadTeam {
 
   // body(i) for every i in [0, n), shared by the members; returns when all are done. The calling
   // thread must be the one that made the team. An exception thrown by body is rethrown here
-  // (the first one seen) after every member has finished its share.
-  void run(int n, Schedule schedule, IndexBody body);
+  // (the first one seen) after every member has finished its share. `site` names the loop for
+  // the balance of its shares (the body's code: BodyRef::identity()).
+  void run(int n, Schedule schedule, IndexBody body, std::uintptr_t site);
+  // body(begin, end) once per member with a non-empty contiguous share of [0, n).
+  void run_ranges(int n, RangeBody body, std::uintptr_t site);
 
   // Whether the calling thread is running a share of some team's loop (a loop started from
   // there runs serially: the team's members are all busy).
   static bool inside_a_loop();
 
  private:
-  // The indices of member m: [begin, end) with stride step.
-  struct Share {
-    int begin, end, step;
-  };
-  Share share(int member) const;
+  // Hands the loop described by the members' fields below to the workers, runs member 0's share
+  // and waits for the others.
+  void run_loop(std::uintptr_t site);
+  // The shares' bounds (contiguous and ranges) from the balance's cumulative shares.
+  void set_bounds();
   void run_share(int member) noexcept;
   void worker_loop(int member);
 
   int size_;
   std::vector<std::thread> workers_;
-  // The loop being handed out (written by the caller before it bumps generation_).
+  // The loop being handed out (written by the caller before it bumps generation_): n_ indices,
+  // either body_ (by schedule_) or range_body_ (contiguous ranges), member m's share
+  // [bounds_[m], bounds_[m + 1]) or, interleaved, the indices whose golden-ratio fraction lies
+  // in [cumulative_[m], cumulative_[m + 1]) (spread evenly over the range at any shares).
   int n_ = 0;
   Schedule schedule_ = Schedule::Contiguous;
   const IndexBody* body_ = nullptr;
+  const RangeBody* range_body_ = nullptr;
+  std::vector<int> bounds_;
+  std::vector<double> cumulative_;
+  ShareBalance balance_;
+  // What each member did in the last loop, each on its own cache line.
+  struct alignas(64) MemberRecord {
+    int count = 0;
+    std::uint64_t ticks = 0;
+  };
+  std::vector<MemberRecord> records_;
+  std::vector<int> counts_;  // (the records gathered for the balance)
+  std::vector<std::uint64_t> ticks_;
   bool stopping_ = false;
   std::exception_ptr error_;
   std::atomic<bool> has_error_{false};

@@ -413,11 +413,8 @@ void ViscousOperator::sweep_colour(int colour, bool forward, bool u_lines, const
     }
   };
   if (last_alone && !forward) sweep_blocks(count, count + 1);
-  // each thread its contiguous share of the blocks (which thread sweeps a line does not change it)
-  const int threads = thread_count();
-  parallel_for(threads, true, [&](int t) {
-    sweep_blocks(int(long(count) * t / threads), int(long(count) * (t + 1) / threads));
-  });
+  // each thread a contiguous share of the blocks (which thread sweeps a line does not change it)
+  parallel_for_ranges(count, [&](int begin, int end) { sweep_blocks(begin, end); });
   if (last_alone && forward) sweep_blocks(count, count + 1);
 }
 

@@ -61,16 +61,60 @@ TEST(ThreadTeam, EveryLoopVisitsEveryIndexOnce) {
 TEST(ThreadTeam, WorkIsSharedAmongTheThreads) {
   ThreadCountGuard guard;
   set_thread_count(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  // a loop's first call has equal shares: contiguous, the caller takes the first half and the
+  // worker the second
   std::vector<std::thread::id> ran_on(64);
   parallel_for(64, true, [&](int i) { ran_on[i] = std::this_thread::get_id(); });
-  const std::thread::id caller = std::this_thread::get_id();
-  // contiguous shares: the caller takes the first half, the worker the second
   EXPECT_TRUE(
       std::all_of(ran_on.begin(), ran_on.begin() + 32, [&](auto id) { return id == caller; }));
   EXPECT_TRUE(
       std::none_of(ran_on.begin() + 32, ran_on.end(), [&](auto id) { return id == caller; }));
+  // interleaved, each thread about half of every stretch of the range (the indices whose
+  // golden-ratio fraction is below or above 1/2)
   parallel_for_interleaved(64, [&](int i) { ran_on[i] = std::this_thread::get_id(); });
-  for (int i = 0; i < 64; ++i) EXPECT_EQ(ran_on[i] == caller, i % 2 == 0) << i;
+  for (int begin = 0; begin < 64; begin += 16) {
+    const auto on_caller = std::count(ran_on.begin() + begin, ran_on.begin() + begin + 16, caller);
+    EXPECT_GE(on_caller, 6) << "indices " << begin << "..";
+    EXPECT_LE(on_caller, 10) << "indices " << begin << "..";
+  }
+}
+
+TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "needs two cores";
+  ThreadCountGuard guard;
+  set_thread_count(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  // every index costs ~1 us on the caller and three times that on the worker: after a few calls
+  // the worker's share settles near a quarter of the range, for either schedule
+  auto spin = [](std::chrono::nanoseconds d) {
+    const auto until = std::chrono::steady_clock::now() + d;
+    while (std::chrono::steady_clock::now() < until) {
+    }
+  };
+  constexpr int n = 400;
+  std::vector<int> visits(n);
+  std::atomic<int> on_worker{0};
+  auto body = [&](int i) {
+    ++visits[i];
+    const bool worker = std::this_thread::get_id() != caller;
+    if (worker) ++on_worker;
+    spin(std::chrono::microseconds(worker ? 3 : 1));
+  };
+  for (bool interleaved : {false, true}) {
+    SCOPED_TRACE(interleaved ? "interleaved" : "contiguous");
+    for (int call = 0; call < 30; ++call) {
+      std::fill(visits.begin(), visits.end(), 0);
+      on_worker = 0;
+      if (interleaved)
+        parallel_for_interleaved(n, body);
+      else
+        parallel_for(n, true, body);
+      ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
+    }
+    EXPECT_LT(on_worker.load(), n * 4 / 10) << "equal shares would give " << n / 2;
+    EXPECT_GT(on_worker.load(), n / 10);
+  }
 }
 
 TEST(ThreadTeam, ALoopInsideALoopRunsOnTheCallingThread) {

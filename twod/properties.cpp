@@ -217,8 +217,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
   Dxx.resize(g.cells());
   Dzz.resize(g.cells());
-  // Rows dealt out one at a time: mu(I) is evaluated only below the surface, so contiguous
-  // blocks of rows gave one thread the grains and the other the light fluid.
+  // Rows spread over the threads (interleaved): mu(I) is evaluated only below the surface, so
+  // contiguous blocks of rows gave one thread the grains and the other the light fluid.
   parallel_for_interleaved(nz, [&](int k) {
     for (int i = 0; i < nx; ++i) {
       const std::size_t c = g.at(i, k);

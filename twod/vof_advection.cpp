@@ -57,8 +57,8 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   if (dir == 0) {
     const double r = dt / g.dx;
     flux.resize(g.cells());  // flux through x-face (i, k); every face written below
-    // (rows one at a time: only the few rows at the surface need PLIC, and in contiguous blocks
-    // they all fell to one thread)
+    // (rows spread over the threads: only the few rows at the surface need PLIC, and in
+    // contiguous blocks they all fell to one thread)
     parallel_for_interleaved(nz, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const double s = u[g.at(i, k)] * r;

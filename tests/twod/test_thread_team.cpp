@@ -85,8 +85,9 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
   ThreadCountGuard guard;
   set_thread_count(2);
   const std::thread::id caller = std::this_thread::get_id();
-  // every index costs ~1 us on the caller and three times that on the worker: after a few calls
-  // the worker's share settles near a quarter of the range, for either schedule
+  // every index costs ~1 us on the caller and six times that on the worker: the worker's share
+  // settles near a seventh of the range, for either schedule. Judged by the median of the later
+  // calls, so that a call disturbed by another process (ctest runs two at once) does not decide.
   auto spin = [](std::chrono::nanoseconds d) {
     const auto until = std::chrono::steady_clock::now() + d;
     while (std::chrono::steady_clock::now() < until) {
@@ -99,10 +100,11 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
     ++visits[i];
     const bool worker = std::this_thread::get_id() != caller;
     if (worker) ++on_worker;
-    spin(std::chrono::microseconds(worker ? 3 : 1));
+    spin(std::chrono::microseconds(worker ? 6 : 1));
   };
   for (bool interleaved : {false, true}) {
     SCOPED_TRACE(interleaved ? "interleaved" : "contiguous");
+    std::vector<int> worker_share;
     for (int call = 0; call < 30; ++call) {
       std::fill(visits.begin(), visits.end(), 0);
       on_worker = 0;
@@ -111,9 +113,12 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
       else
         parallel_for(n, true, body);
       ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
+      if (call >= 10) worker_share.push_back(on_worker.load());
     }
-    EXPECT_LT(on_worker.load(), n * 4 / 10) << "equal shares would give " << n / 2;
-    EXPECT_GT(on_worker.load(), n / 10);
+    std::nth_element(worker_share.begin(), worker_share.begin() + 10, worker_share.end());
+    const int median = worker_share[10];
+    EXPECT_LT(median, n * 4 / 10) << "equal shares would give " << n / 2;
+    EXPECT_GT(median, 0) << "every member keeps at least one index";
   }
 }
 

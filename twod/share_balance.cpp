@@ -53,7 +53,7 @@ int ShareBalance::shares(std::uintptr_t site, int n, double* cumulative) {
 void ShareBalance::record(int slot, const int* counts, const std::uint64_t* ticks) {
   if (slot < 0) return;
   for (int m = 0; m < members_; ++m)
-    if (counts[m] < 1 || ticks[m] < kMinTicks) return;
+    if (counts[m] < 1 || ticks[m] < kMinTicks || ticks[m] > kMaxTicks) return;
   double* s = &speed_[std::size_t(slot) * std::size_t(members_)];
   // A member preempted by the host for a while must not lose its share for good: each measured
   // speed is kept within a factor of 4 of the others' mean.

@@ -30,13 +30,17 @@ class ShareBalance {
   int shares(std::uintptr_t site, int n, double* cumulative);
 
   // What each member did in the slot's loop: counts[m] indices in ticks[m] clock ticks. Shares
-  // under kMinTicks are too short to time and leave the speeds as they were.
+  // under kMinTicks are too short to time, and those over kMaxTicks mistimed; either leaves the
+  // speeds as they were.
   void record(int slot, const int* counts, const std::uint64_t* ticks);
 
   // The clock the members time their shares with (the time-stamp counter where there is one:
   // a few nanoseconds per reading, against 20-30 for the system clock here).
   static std::uint64_t ticks_now();
-  static constexpr std::uint64_t kMinTicks = 4000;  // ~1.5 us at this machine's 2.6 GHz
+  static constexpr std::uint64_t kMinTicks = 4000;  // ~1.9 us at this machine's 2.1 GHz
+  // Longer than any share (minutes): a thread moved to another core whose counter is not in step
+  // (this host's kernel marks the counter unstable) can read a negative, i.e. huge, difference.
+  static constexpr std::uint64_t kMaxTicks = std::uint64_t(1) << 40;
 
  private:
   static constexpr int kSlots = 1024;  // loop sites x lengths seen by one team (~100 in a run)

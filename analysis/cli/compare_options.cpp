@@ -1,6 +1,8 @@
 // The options of `granbench compare`; see compare_options.hpp.
 #include "analysis/cli/compare_options.hpp"
 
+#include "analysis/cli/run_twod.hpp"
+
 namespace granbench::cli {
 
 void add_compare_options(CLI::App& sub, CompareOptions& o) {
@@ -21,10 +23,8 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
       ->check(positive());
   sub.add_option("--resolution", o.resolution,
                  "grids at Lx = 8 cm {coarse: 80x32 / 128, default: 160x64 / 256, fine: 320x128 / "
-                 "512}; at another Lx, at least these 2D cells along x and at most their dx, and "
-                 "for a wave under 7.5 h0 up to twice the 2D cells across the layer, near the 2D "
-                 "cutoff up to four times (the deficit law's grid for 7.5 % of the growth; 18.75 % "
-                 "on coarse)")
+                 "512}; at another Lx, at least these 2D cells along x and at most their dx, and " +
+                     twod_refinement_help())
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   // The ranges of `run` (cmd_run.cpp, twod_options.cpp); the product is capped in run_compare.

@@ -45,6 +45,10 @@ struct TwodOptions {
   bool extrapolate = false;
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
+// How the default 2D grid refines across the layer, for the help of compare's and sweep's
+// --resolution and run's --nz: "for a wave under 7.5 h0 up to 2x the cells across the layer, ...",
+// from the rules' own constants (TwodSettings, grid_preset), so the three texts cannot drift.
+std::string twod_refinement_help();  // twod_options.cpp
 // --extrapolate, an option of `run` alone (twod_options.cpp): the rollwave cases saturate, where
 // the deficit law of a linear wave does not hold.
 void add_twod_extrapolate_option(CLI::App& app, TwodOptions& o);

@@ -7,6 +7,7 @@
 
 #include "analysis/cli/extrapolation_report.hpp"
 #include "analysis/cli/physics_warnings.hpp"
+#include "analysis/cli/run_twod.hpp"
 #include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
 
@@ -87,10 +88,8 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
   sub.add_option(
          "--resolution", o.resolution,
          "2D grid of --model twod|both at Lx = 8 cm {coarse: 80x32, default: 160x64, fine: "
-         "320x128}; at another Lx, at least these cells along x and at most their dx, and "
-         "for a wave under 7.5 h0 up to twice the cells across the layer, near the 2D cutoff "
-         "up to four times (the deficit law's grid for 7.5 % of the growth; 18.75 % on "
-         "coarse)")
+         "320x128}; at another Lx, at least these cells along x and at most their dx, and " +
+             twod_refinement_help())
       ->check(one_of({"coarse", "default", "fine"}))
       ->capture_default_str();
   sub.add_option("--twod-frame", o.twod_frame,

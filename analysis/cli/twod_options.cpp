@@ -1,6 +1,7 @@
 // The 2D model's own options of `granbench run --model twod` and the solver parameters they
 // set (run_twod.hpp). Parsing, validation and mapping only; the run is in run_twod.cpp.
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,11 +20,20 @@ std::vector<std::string> mixing_names() {
 
 }  // namespace
 
+std::string twod_refinement_help() {
+  std::ostringstream t;
+  t << "for a wave under " << TwodSettings::longest_wave_to_refine << " h0 up to "
+    << TwodSettings::max_refinement << "x the cells across the layer, near the 2D cutoff up to "
+    << TwodSettings::max_law_refinement << "x (the deficit law's grid for "
+    << 100 * grid_preset("default").twod_aimed_growth_deficit << " % of the growth; "
+    << 100 * grid_preset("coarse").twod_aimed_growth_deficit << " % on coarse)";
+  return t.str();
+}
+
 void add_twod_options(CLI::App& app, TwodOptions& o) {
   app.add_option("--nz", o.settings.nz,
-                 "twod: cells along z, in [4, 4096]; default 64, and for a wave (Lx / mode) under "
-                 "7.5 h0 up to twice that, near the 2D cutoff up to four times (the deficit "
-                 "law's grid for 7.5 % of the growth), as compare and sweep")
+                 "twod: cells along z, in [4, 4096]; default 64, and (the wave: Lx / mode) " +
+                     twod_refinement_help() + ", as compare and sweep")
       ->check(count_range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,

@@ -9,7 +9,10 @@
 // cell update. Before and after the runs, a ping-pong of one cache line between two threads
 // measures the cores' round-trip latency: on this project's virtual machine it is 110 ns in some
 // hours and 420-490 ns in others (the two virtual cores placed near or far apart), and the
-// two-thread speed-up follows it, because every parallel loop hands data from core to core.
+// two-thread speed-up follows it, because every parallel loop hands data from core to core. The
+// probe runs only when the process may use two CPUs or more (its affinity mask: under `taskset`
+// to one CPU it would spin for minutes), and a thread count above the available CPUs is named
+// on stderr (JSON `available_cpus`).
 //
 //   bench_twod_rollwave                 256x64 to t = 1 s, 512x128 to t = 0.05 s
 //   bench_twod_rollwave T1 T2           the two end times [s] (0 skips a grid)
@@ -30,6 +33,10 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 #include "common/steady_state.hpp"
 #include "twod/diagnostics.hpp"
@@ -76,8 +83,19 @@ double triad_bandwidth(int threads) {
   return 3.0 * 8.0 * double(n) / best / 1e9;
 }
 
+// The CPUs this process may run on (its affinity mask, e.g. under taskset), which can be fewer
+// than the machine's hardware threads.
+int available_cpus() {
+#ifdef __linux__
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof(set), &set) == 0) return CPU_COUNT(&set);
+#endif
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 // Round trip of one cache line between two threads (each waits for the other's store), in ns:
-// the median of 9 repetitions of 100 000 round trips.
+// the median of 9 repetitions of 100 000 round trips. Both threads spin without yielding, so it
+// needs two CPUs: on one, every trip would wait for the scheduler to switch threads (minutes).
 double core_round_trip_ns() {
   std::vector<double> times;
   for (int rep = 0; rep < 9; ++rep) {
@@ -167,7 +185,16 @@ int main(int argc, char** argv) {
                         {"hardware_threads", std::thread::hardware_concurrency()},
                         {"triad_bandwidth_GB_per_s", nlohmann::json::object()},
                         {"runs", nlohmann::json::array()}};
-  const bool two_cores = std::thread::hardware_concurrency() >= 2;
+  const int cpus = available_cpus();
+  out["available_cpus"] = cpus;
+  const bool two_cores = cpus >= 2;
+  if (!two_cores)
+    std::cerr << "bench_twod_rollwave: one CPU available (affinity mask): no core round trip\n";
+  for (int threads : thread_counts)
+    if (threads > cpus)
+      std::cerr << "bench_twod_rollwave: warning: " << threads << " threads on " << cpus
+                << " available CPUs: the threads take turns, so the times do not measure "
+                   "scaling\n";
   if (two_cores) {
     out["core_round_trip_ns"]["before"] = core_round_trip_ns();
     std::cerr << "core-to-core round trip " << out["core_round_trip_ns"]["before"] << " ns\n";

@@ -128,10 +128,11 @@ void ThreadTeam::run_loop(std::uintptr_t site) {
     wake_.notify_all();
   }
   run_share(0);
-  // When the team shares the machine with other threads (compare runs both models at once), let
-  // them have the core now and then.
+  // When the team shares the machine with other threads (compare runs both models at once;
+  // another program), let them have the core now and then: a worker preempted in its share gets
+  // it back sooner.
   for (unsigned spins = 0; pending_.load(std::memory_order_acquire) != 0; ++spins) {
-    if (spins % 4096 == 4095)
+    if (spins % 256 == 255)
       std::this_thread::yield();
     else
       cpu_relax();
@@ -164,12 +165,17 @@ void ThreadTeam::worker_loop(int member) {
       for (unsigned spins = 1; now == seen; ++spins) {
         cpu_relax();
         now = generation_.load(std::memory_order_acquire);
-        if (now == seen && spins % 256 == 0 &&
-            std::chrono::steady_clock::now() - since > kSpinBeforeSleep) {
+        if (now != seen || spins % 256 != 0) continue;
+        if (std::chrono::steady_clock::now() - since > kSpinBeforeSleep) {
           std::unique_lock<std::mutex> lock(sleep_mutex_);
           sleepers_.fetch_add(1, std::memory_order_seq_cst);
           while ((now = generation_.load(std::memory_order_seq_cst)) == seen) wake_.wait(lock);
           sleepers_.fetch_sub(1, std::memory_order_relaxed);
+        } else {
+          // Polling without yielding held the core for its whole 200 us whenever another thread
+          // waited for it (more threads than free cores): the caller of the team then stalled
+          // in every loop.
+          std::this_thread::yield();
         }
       }
     }

@@ -6,7 +6,9 @@
 // threads, against 0.9 us for a hand-off through one atomic counter to a spinning worker, and its
 // wake-ups made futex system calls inside the projection (docs/performance.md). The team keeps
 // its workers spinning between loops for a short while, then lets them sleep (so an idle solver
-// does not hold a core), and hands each loop out by bumping one counter.
+// does not hold a core), and hands each loop out by bumping one counter. When the caller has
+// waited a while for a worker that has not begun its share (more threads than free cores), it
+// runs that share itself.
 //
 // A loop's shares follow the members' measured speeds at that loop (share_balance.hpp): equal at
 // first, then in proportion to how fast each member got through its share on earlier calls. The
@@ -28,8 +30,12 @@ namespace granbench::twod {
 
 class ThreadTeam {
  public:
+  // Whether the caller, done with its own share and kept waiting, runs a worker's share that the
+  // worker has not begun (see run_loop). Never: for tests of the shares themselves.
+  enum class TakeOver { WhenTheWorkerHasNotBegun, Never };
+
   // A team of `size` members: the calling thread and size - 1 workers started here.
-  explicit ThreadTeam(int size);
+  explicit ThreadTeam(int size, TakeOver take_over = TakeOver::WhenTheWorkerHasNotBegun);
   ~ThreadTeam();
   ThreadTeam(const ThreadTeam&) = delete;
   ThreadTeam& operator=(const ThreadTeam&) = delete;
@@ -44,6 +50,9 @@ class ThreadTeam {
   // body(begin, end) once per member with a non-empty contiguous share of [0, n).
   void run_ranges(int n, RangeBody body, std::uintptr_t site);
 
+  // How many shares the caller ran for workers that had not taken them (see run_loop).
+  std::uint64_t shares_taken_over() const { return shares_taken_over_; }
+
   // Whether the calling thread is running a share of some team's loop (a loop started from
   // there runs serially: the team's members are all busy).
   static bool inside_a_loop();
@@ -55,9 +64,13 @@ class ThreadTeam {
   // The shares' bounds (contiguous and ranges) from the balance's cumulative shares.
   void set_bounds();
   void run_share(int member) noexcept;
+  // Takes member's share of the loop of `generation` for the calling thread (the member itself,
+  // or the caller for a worker that has not begun); false when someone has taken it already.
+  bool claim(int member, unsigned generation);
   void worker_loop(int member);
 
   int size_;
+  TakeOver take_over_;
   std::vector<std::thread> workers_;
   // The loop being handed out (written by the caller before it bumps generation_): n_ indices,
   // either body_ (by schedule_) or range_body_ (contiguous ranges), member m's share
@@ -78,6 +91,14 @@ class ThreadTeam {
   std::vector<MemberRecord> records_;
   std::vector<int> counts_;  // (the records gathered for the balance)
   std::vector<std::uint64_t> ticks_;
+  // Per member, the generation of the last loop whose share someone took, each on its own cache
+  // line.
+  struct alignas(64) Claim {
+    std::atomic<unsigned> generation{0};
+  };
+  std::vector<Claim> claims_;
+  std::uint64_t shares_taken_over_ = 0;
+  bool took_over_last_loop_ = false;
   bool stopping_ = false;
   std::exception_ptr error_;
   std::atomic<bool> has_error_{false};

@@ -1,7 +1,8 @@
 // The thread team under the 2D solver's parallel loops (twod/thread_team.hpp, parallel.hpp):
 // every index visited exactly once by each kind of loop, for any thread count and range length;
 // a loop started inside another runs on the calling thread; an exception thrown in any member's
-// share reaches the caller and leaves the team usable; changing the thread count remakes it.
+// share reaches the caller and leaves the team usable; changing the thread count remakes it; a
+// worker that does not get a core has its shares run by the caller.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,12 +12,25 @@
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sched.h>
+#endif
+
 #include "twod/parallel.hpp"
 #include "twod/thread_team.hpp"
 
 using namespace granbench::twod;
 
 namespace {
+
+// Waits until `flag` is set, for at most 10 s; returns whether it was. (The caller of a loop may
+// run a worker's share that the worker has not begun: a caller's index that waits for one of the
+// worker's makes sure that the worker ran its own share.)
+bool wait_for(const std::atomic<bool>& flag) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (!flag.load() && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+  return flag.load();
+}
 
 // Restores the calling thread's thread count when a test ends.
 class ThreadCountGuard {
@@ -59,20 +73,22 @@ TEST(ThreadTeam, EveryLoopVisitsEveryIndexOnce) {
 }
 
 TEST(ThreadTeam, WorkIsSharedAmongTheThreads) {
-  ThreadCountGuard guard;
-  set_thread_count(2);
+  // (a team whose caller never runs its worker's share, as in the next test)
+  ThreadTeam team(2, ThreadTeam::TakeOver::Never);
   const std::thread::id caller = std::this_thread::get_id();
   // a loop's first call has equal shares: contiguous, the caller takes the first half and the
   // worker the second
   std::vector<std::thread::id> ran_on(64);
-  parallel_for(64, true, [&](int i) { ran_on[i] = std::this_thread::get_id(); });
+  auto record = [&](int i) { ran_on[i] = std::this_thread::get_id(); };
+  const IndexBody body = record;
+  team.run(64, Schedule::Contiguous, body, body.identity());
   EXPECT_TRUE(
       std::all_of(ran_on.begin(), ran_on.begin() + 32, [&](auto id) { return id == caller; }));
   EXPECT_TRUE(
       std::none_of(ran_on.begin() + 32, ran_on.end(), [&](auto id) { return id == caller; }));
   // interleaved, each thread about half of every stretch of the range (the indices whose
   // golden-ratio fraction is below or above 1/2)
-  parallel_for_interleaved(64, [&](int i) { ran_on[i] = std::this_thread::get_id(); });
+  team.run(64, Schedule::Interleaved, body, body.identity());
   for (int begin = 0; begin < 64; begin += 16) {
     const auto on_caller = std::count(ran_on.begin() + begin, ran_on.begin() + begin + 16, caller);
     EXPECT_GE(on_caller, 6) << "indices " << begin << "..";
@@ -82,8 +98,10 @@ TEST(ThreadTeam, WorkIsSharedAmongTheThreads) {
 
 TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
   if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "needs two cores";
-  ThreadCountGuard guard;
-  set_thread_count(2);
+  // A team whose caller never runs its worker's share: under load (ctest runs two tests at once)
+  // a worker without a core would leave its share to the caller, and this test is about the
+  // shares the members get.
+  ThreadTeam team(2, ThreadTeam::TakeOver::Never);
   const std::thread::id caller = std::this_thread::get_id();
   // every index costs ~1 us on the caller and six times that on the worker: the worker's share
   // settles near a seventh of the range, for either schedule. Judged by the median of the later
@@ -108,10 +126,9 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
     for (int call = 0; call < 30; ++call) {
       std::fill(visits.begin(), visits.end(), 0);
       on_worker = 0;
-      if (interleaved)
-        parallel_for_interleaved(n, body);
-      else
-        parallel_for(n, true, body);
+      const IndexBody loop = body;
+      team.run(n, interleaved ? Schedule::Interleaved : Schedule::Contiguous, loop,
+               loop.identity());
       ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
       if (call >= 10) worker_share.push_back(on_worker.load());
     }
@@ -162,6 +179,47 @@ TEST(ThreadTeam, AWorkerThatSleptWakesForTheNextLoop) {
   std::vector<int> visits(10, 0);
   parallel_for(10, true, [&](int i) { ++visits[i]; });
   std::this_thread::sleep_for(std::chrono::milliseconds(20));  // longer than the worker spins
-  parallel_for(10, true, [&](int i) { ++visits[i]; });
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<bool> worker_ran{false};
+  parallel_for(10, true, [&](int i) {
+    ++visits[i];
+    if (std::this_thread::get_id() != caller)
+      worker_ran = true;
+    else
+      wait_for(worker_ran);
+  });
   EXPECT_EQ(std::count(visits.begin(), visits.end(), 2), 10);
+  EXPECT_TRUE(worker_ran.load());
 }
+
+#ifdef __linux__
+TEST(ThreadTeam, TheCallerRunsTheSharesOfAWorkerThatHasNoCore) {
+  // Both of the team's threads on one CPU (the worker inherits the affinity of the thread that
+  // starts it): while the caller runs, its worker cannot, so waiting for it would cost two thread
+  // switches per loop. The caller takes such shares over; every index is still visited once.
+  cpu_set_t saved, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof(saved), &saved), 0);
+  int cpu = 0;
+  while (!CPU_ISSET(cpu, &saved)) ++cpu;
+  CPU_ZERO(&one);
+  CPU_SET(cpu, &one);
+  ASSERT_EQ(sched_setaffinity(0, sizeof(one), &one), 0);
+  std::uint64_t taken_over = 0;
+  {
+    ThreadTeam team(2);
+    constexpr int n = 64;
+    std::vector<int> visits(n);
+    auto visit = [&](int i) { ++visits[i]; };
+    const IndexBody body = visit;  // (a reference to `visit`)
+    for (int call = 0; call < 200; ++call) {
+      std::fill(visits.begin(), visits.end(), 0);
+      team.run(n, call % 2 == 0 ? Schedule::Contiguous : Schedule::Interleaved, body,
+               body.identity());
+      ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
+    }
+    taken_over = team.shares_taken_over();
+  }
+  sched_setaffinity(0, sizeof(saved), &saved);
+  EXPECT_GT(taken_over, 0u);
+}
+#endif

@@ -141,7 +141,7 @@ void ThreadTeam::run_loop(std::uintptr_t site) {
   // runs the shares whose members have not taken them yet. It looks at once when it took a share
   // over in the last loop, and otherwise only after kPatientPolls: reading a worker's claim
   // makes the worker's next claim move the cache line back across the cores (which, looked at
-  // after 64 or 256 polls, 1-5 us here, cost 4-7 % of a step with the two cores far apart).
+  // after 64 or 256 polls, 1-5 us here, cost 2-8 % of a step with the two cores far apart).
   const bool may_take_over = take_over_ == TakeOver::WhenTheWorkerHasNotBegun;
   const bool look_at_once = took_over_last_loop_;
   took_over_last_loop_ = false;

@@ -56,10 +56,11 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   twod.nx = o.nx > 0 ? o.nx : twod.cells_along(chute.Lx);  // the preset's, as sweep's points
   twod.nz = res.twod_nz;
   twod.aimed_growth_deficit = res.twod_aimed_growth_deficit;
-  twod.nz = o.nz > 0
-                ? o.nz
-                : twod.cells_across(chute.Lx, chute.steady(),
-                                    theory ? theory->exact_2d.growth_rate : NAN);  // as sweep's
+  if (o.nz > 0)
+    twod.nz = o.nz;
+  else  // as sweep's
+    twod = twod.refined_across(chute.Lx, chute.steady(),
+                               theory ? theory->exact_2d.growth_rate : NAN, chute.a0, chute.t_end);
   twod.viscosity_passes = o.viscosity_passes;
   twod.frame_fraction = o.twod_frame;
   // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of

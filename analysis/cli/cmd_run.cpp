@@ -114,8 +114,9 @@ void refuse_options_of_other_model(const CLI::App& app, const std::vector<std::s
 // that compare and sweep give this wave: along x the preset's 160 cells per 8 cm, at least 160,
 // a multiple of 16 (TwodSettings::cells_along; 256 stays the depth-averaged default); across
 // the layer 64 cells, more for a wave under 7.5 h0 and more again near the 2D cutoff
-// (cells_across, with the wave's exact 2D growth). The options' shown defaults become those
-// values.
+// (refined_across, with the wave's exact 2D growth; there a wave that stays small also gets a
+// light layer of h0/4, so that the domain is about 1.25 h0 high). The options' shown defaults
+// become those values.
 void set_twod_grid_defaults(CLI::App& sub, RunOptions& run, TwodOptions& twod) {
   if (sub.count("--nx") == 0) {
     run.nx = std::size_t(twod.settings.cells_along(run.Lx));
@@ -131,7 +132,10 @@ void set_twod_grid_defaults(CLI::App& sub, RunOptions& run, TwodOptions& twod) {
       quick.N_check = 0;
       const double growth =
           linear2d::surface_eigenmode(base, run.flow.make_curve(), wavelength, quick).growth_rate();
-      twod.settings.nz = settings.cells_across(wavelength, base, growth);
+      const TwodSettings refined =
+          settings.refined_across(wavelength, base, growth, run.a0, run.t_end);
+      twod.settings.nz = refined.nz;
+      twod.settings.light_layer_over_h0 = refined.light_layer_over_h0;
     } catch (const std::exception&) {
       // no steady flow or no surface mode (the run refuses the first with the reason later)
       twod.settings.nz = settings.cells_across(wavelength, run.flow.h0);

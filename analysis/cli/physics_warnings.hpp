@@ -11,8 +11,8 @@
 //    (docs/twod-validation.md §3);
 //  - the exact 2D growth rate is small against the error the grid is expected to carry (near a
 //    cutoff, where the growth falls to zero): twod_growth_accuracy_warning. The default grids
-//    refine there by the same law (TwodSettings::cells_across with the growth), up to four times
-//    the preset's cells across, so on them it names only the waves nearest the cutoff.
+//    refine there by the same law (TwodSettings::refined_across with the growth), up to six
+//    times the preset's rows, so on them it names only the waves nearest the cutoff.
 // And one about cost, twod_grid_cost_warning: a grid the pressure multigrid cannot coarsen.
 #pragma once
 

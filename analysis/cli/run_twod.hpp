@@ -32,7 +32,9 @@ struct TwodOptions {
     s.nz = 64;
     return s;
   }();
-  double Lz = 0.0;  // domain height [m]; 0: ~2 h0, h0 mid-cell (mid_cell_domain_height)
+  // domain height [m]; 0: ~(1 + settings.light_layer_over_h0) h0, h0 mid-cell
+  // (mid_cell_domain_height)
+  double Lz = 0.0;
   std::string mixing = twod::viscosity_mixing_name(twod::Rheology{}.mixing);  // --mixing's text
   std::string momentum_transport =  // --momentum-transport's text
       twod::SolverParams{}.consistent_momentum ? "consistent" : "velocity";

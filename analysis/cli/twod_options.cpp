@@ -26,7 +26,10 @@ std::string twod_refinement_help() {
     << TwodSettings::max_refinement << "x the cells across the layer, near the 2D cutoff up to "
     << TwodSettings::max_law_refinement << "x (the deficit law's grid for "
     << 100 * grid_preset("default").twod_aimed_growth_deficit << " % of the growth; "
-    << 100 * grid_preset("coarse").twod_aimed_growth_deficit << " % on coarse)";
+    << 100 * grid_preset("coarse").twod_aimed_growth_deficit
+    << " % on coarse), there with a light layer of " << TwodSettings::near_cutoff_light_layer
+    << " h0 if the seed grown to the run's end stays within " << TwodSettings::small_wave_over_h0
+    << " h0";
   return t.str();
 }
 
@@ -37,7 +40,8 @@ void add_twod_options(CLI::App& app, TwodOptions& o) {
       ->check(count_range(4, 4096))
       ->capture_default_str();
   app.add_option("--Lz", o.Lz,
-                 "twod: domain height [m], > h0 + a0; default about 2 h0 with h0 mid-cell")
+                 "twod: domain height [m], > h0 + a0; default about 2 h0 (1.25 h0 near the 2D "
+                 "cutoff, see --nz) with h0 mid-cell")
       ->check(positive());
   app.add_option("--eta-max", o.settings.eta_max, "twod: cap on the granular viscosity [Pa s], > 0")
       ->check(positive())
@@ -126,7 +130,9 @@ ChuteCase chute_case(const RunOptions& o) {
 twod::SolverParams twod_run_params(const RunOptions& o, const TwodOptions& mo, double& Lz) {
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
   o.flow.steady();  // no steady flow: an error on --angle
-  Lz = mo.Lz > 0.0 ? mo.Lz : twod::mid_cell_domain_height(o.flow.h0, mo.settings.nz);
+  Lz = mo.Lz > 0.0 ? mo.Lz
+                   : twod::mid_cell_domain_height(o.flow.h0, mo.settings.nz,
+                                                  1.0 + mo.settings.light_layer_over_h0);
   if (!(Lz > o.flow.h0 + o.a0))
     throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
   if (!(mo.settings.eta_min < mo.settings.eta_max))

@@ -197,9 +197,9 @@ void sort_points(std::vector<SweepPoint>& points) {
 }  // namespace
 
 TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_growth) {
-  TwodSettings twod = spec.twod_settings;
+  TwodSettings twod = spec.twod_settings.refined_across(Lx, spec.chute.steady(), exact_growth,
+                                                        spec.chute.a0, spec.chute.t_end);
   twod.nx = twod.cells_along(Lx);
-  twod.nz = twod.cells_across(Lx, spec.chute.steady(), exact_growth);
   twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
   return twod;
 }

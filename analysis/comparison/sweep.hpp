@@ -83,8 +83,9 @@ struct SweepSpec {
 };
 
 // The 2D settings of the point of length Lx: the preset's cells along it (cells_along) and across
-// the layer for its wavelength and its exact 2D growth rate (cells_across; NaN: by the
-// wavelength alone, the fewest it can have), and the --jobs workers sharing the 2D solver's
+// the layer for its wavelength, its exact 2D growth rate and the sweep's seed and run length
+// (refined_across, which near the cutoff also thins the light layer; NaN: by the wavelength
+// alone, the fewest it can have), and the --jobs workers sharing the 2D solver's
 // threads (oversubscribed threads wait on each other). The one place a point's grid is made.
 TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_growth);
 

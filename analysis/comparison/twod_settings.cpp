@@ -1,24 +1,35 @@
 // The 2D solver's parameters from a chute case and the 2D settings; see twod_settings.hpp.
 #include "analysis/comparison/twod_settings.hpp"
 
+#include <cmath>
+
 #include "analysis/comparison/growth_deficit_law.hpp"
 #include "twod/run.hpp"
 
 namespace granbench {
 
-int TwodSettings::cells_across(double wavelength, const SteadyState& base,
-                               double exact_growth) const {
-  int n = cells_across(wavelength, base.h0);
-  if (!(exact_growth > 0.0)) return n;
+TwodSettings TwodSettings::refined_across(double wavelength, const SteadyState& base,
+                                          double exact_growth, double a0, double t_end) const {
+  TwodSettings r = *this;
+  r.nz = cells_across(wavelength, base.h0);
+  if (!(exact_growth > 0.0)) return r;
+  auto meets_the_aim = [&](const TwodSettings& t) {
+    const double dz = t.domain_height(base.h0) / t.nz;
+    return expected_twod_growth_deficit(base, dz, wavelength) <=
+           aimed_growth_deficit * exact_growth;
+  };
+  if (meets_the_aim(r)) return r;
+  const bool stays_small = a0 * std::exp(exact_growth * t_end) <= small_wave_over_h0 * base.h0;
   const int most = multiple_of_16(static_cast<int>(std::ceil(max_law_refinement * nz)));
-  for (; n < most; n += 16) {
-    TwodSettings candidate = *this;
-    candidate.nz = n;  // (the domain's height follows nz when the surface is put mid-cell)
-    const double dz = candidate.domain_height(base.h0) / n;
-    if (expected_twod_growth_deficit(base, dz, wavelength) <= aimed_growth_deficit * exact_growth)
-      return n;
+  if (Lz_over_h0 == 0.0 && stays_small && light_layer_over_h0 > near_cutoff_light_layer) {
+    // the fewest rows of the thin domain with cells no taller than the wavelength's grid's
+    const double tallest = r.domain_height(base.h0) / r.nz;
+    r.light_layer_over_h0 = near_cutoff_light_layer;
+    for (r.nz = 16; r.nz < most && r.domain_height(base.h0) / r.nz > tallest;) r.nz += 16;
   }
-  return n;  // the cap: the warnings say what is left (analysis/cli/physics_warnings.hpp)
+  for (; r.nz < most; r.nz += 16)  // (the domain's height follows nz when the surface is mid-cell)
+    if (meets_the_aim(r)) return r;
+  return r;  // the cap: the warnings say what is left (analysis/cli/physics_warnings.hpp)
 }
 
 twod::SolverParams twod_solver_params(const ChuteCase& c, const TwodSettings& s) {
@@ -52,6 +63,7 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
   return {{"nx", double(s.nx)},
           {"nz", double(s.nz)},
           {"Lz_over_h0", s.Lz_over_h0},
+          {"light_layer_over_h0", s.light_layer_over_h0},
           {"eta_max", s.eta_max},
           {"eta_min", s.eta_min},
           {"D_min", s.D_min},
@@ -75,7 +87,9 @@ std::vector<std::pair<std::string, double>> named_values(const TwodSettings& s) 
           // it kept nz at every length, and its short points are not resumed on the new grids.
           // 2: and raised by the deficit law near the 2D cutoff, to aimed_growth_deficit of the
           // exact growth (since 6 December); a file of rule 1 kept at most twice the preset's nz.
-          {"nz_rule", 2.0},
+          // 3: and, where the law refines a wave that stays small, a light layer of h0/4 (since
+          // 6 December, thirty-sixth session); rule 2 kept h0 of it.
+          {"nz_rule", 3.0},
           {"aimed_growth_deficit", s.aimed_growth_deficit}};
 }
 

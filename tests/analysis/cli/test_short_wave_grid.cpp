@@ -113,9 +113,15 @@ TEST_F(ShortWaveGrid, CompareRefinesAcrossTheLayerUnlessNzIsGiven) {
   EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --resolution coarse", "twod_nz"), 48.0);
   EXPECT_EQ(recorded_cells(compare + "--Lx 0.02 --nz 40", "twod_nz"), 40.0);
   // near the cutoff the deficit law's grid: the fewest cells across on which it expects 7.5 % of
-  // the growth (3/4 of 25 % on the coarse preset), at most four times the preset's
-  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015", "twod_nz"), 256.0);
-  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015 --resolution coarse", "twod_nz"), 128.0);
+  // the growth (3/4 of 25 % on the coarse preset), at most six times the preset's, under h0/4 of
+  // light fluid for compare's small seed: 127.5 and 76 cells per h0
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015", "twod_nz"), 160.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015", "twod_light_layer_over_h0"), 0.25);
+  EXPECT_NEAR(recorded_cells(compare + "--Lx 0.015", "twod_Lz"), 160 * 0.004 / 127.5, 1e-15);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015 --resolution coarse", "twod_nz"), 96.0);
+  // a seed that grows beyond h0/20 keeps h0 of light fluid, and the same cells per h0
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015 --a0 3e-4", "twod_nz"), 256.0);
+  EXPECT_EQ(recorded_cells(compare + "--Lx 0.015 --a0 3e-4", "twod_light_layer_over_h0"), 1.0);
 }
 
 }  // namespace

@@ -186,12 +186,13 @@ TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
   EXPECT_NE(coarse[1].find("short wave (5 h0)"), std::string::npos) << coarse[1];
   // and on its 23.5 cells per h0 the 2 cm wave's growth is expected 17 % under the theory
   EXPECT_EQ(coarse[2].find("Lx = 0.02 m: a small growth rate"), 0u) << coarse[2];
-  // Near the cutoff (1.38 cm) the default preset's grid follows the deficit law up to four times
-  // its cells across: 1.5 cm (256 cells) is not named, 1.4 cm is, at that cap.
-  EXPECT_TRUE(warnings("twod", "0.015:0.02:2", "").empty());
-  const auto near_cutoff = warnings("twod", "0.014:0.02:2", "");
+  // Near the cutoff (1.38 cm) the default preset's grid follows the deficit law up to six times
+  // its rows, under a light layer of h0/4: 1.4 cm (384 rows, 306.5 cells per h0) is not named,
+  // 1.39 cm is, at that cap.
+  EXPECT_TRUE(warnings("twod", "0.014:0.02:2", "").empty());
+  const auto near_cutoff = warnings("twod", "0.0139:0.02:2", "");
   ASSERT_EQ(near_cutoff.size(), 1u);
-  EXPECT_EQ(near_cutoff[0].find("Lx = 0.014 m: a small growth rate"), 0u) << near_cutoff[0];
+  EXPECT_EQ(near_cutoff[0].find("Lx = 0.0139 m: a small growth rate"), 0u) << near_cutoff[0];
   EXPECT_TRUE(warnings("depthavg", "0.02:0.08:4", "").empty());
   // which names the cheaper way out, the extrapolation from half the cells across the layer
   EXPECT_NE(near_cutoff[0].find("or give --extrapolate"), std::string::npos) << near_cutoff[0];

@@ -64,49 +64,97 @@ TEST(TwodSettings, ShortWavesGetMoreCellsAcrossTheLayer) {
 }
 
 // Near the 2D cutoff the deficit law raises nz to the fewest cells (a multiple of 16) on which it
-// expects at most aimed_growth_deficit of the exact 2D growth, at most four times the preset's;
-// every wave the law already trusts on the wavelength's grid keeps it.
-TEST(TwodSettings, NearTheCutoffTheDeficitLawAddsCellsAcrossTheLayer) {
-  auto law_grid = [](double angle, double h0, double Lx, int preset_nz, double aim) {
-    ChuteCase c;
-    c.angle_deg = angle;
-    c.h0 = h0;
-    const SteadyState base = c.steady();
-    const double growth = linear2d::surface_eigenmode(base, c.make_curve(), Lx).growth_rate();
-    TwodSettings s;
-    s.nz = preset_nz;
-    s.aimed_growth_deficit = aim;
-    const int n = s.cells_across(Lx, base, growth);
-    auto expected_share = [&](int nz) {
-      TwodSettings t = s;
-      t.nz = nz;
-      return expected_twod_growth_deficit(base, t.domain_height(h0) / nz, Lx) / growth;
-    };
-    const int by_wavelength = s.cells_across(Lx, h0);
-    EXPECT_EQ(n % 16, 0);
-    EXPECT_GE(n, by_wavelength);
-    EXPECT_LE(n, 4 * preset_nz);
-    if (n > by_wavelength && n < 4 * preset_nz) {  // the fewest that meet the aim
-      EXPECT_LE(expected_share(n), aim) << Lx;
-      EXPECT_GT(expected_share(n - 16), aim) << Lx;
-    }
-    EXPECT_EQ(s.cells_across(Lx, base, NAN), by_wavelength);
-    EXPECT_EQ(s.cells_across(Lx, base, -1.0), by_wavelength);
-    return n;
+// expects at most aimed_growth_deficit of the exact 2D growth, at most six times the preset's;
+// every wave the law already trusts on the wavelength's grid keeps it. Where it refines, a wave
+// that stays small (the seed grown at the exact rate over the run within h0/20) also gets a light
+// layer of h0/4; a larger one keeps h0 of it, and so does a domain of given height.
+struct SeedAndRun {
+  double a0, t_end;
+};
+constexpr SeedAndRun kLinearRun{1e-6, 2.0};  // compare's and sweep's defaults
+constexpr SeedAndRun kPaperRun{2e-4, 10.0};  // run's default: the paper's sine start, 10 s
+
+TwodSettings law_grid(double angle, double h0, double Lx, int preset_nz, double aim,
+                      SeedAndRun seed, double Lz_over_h0 = 0.0) {
+  ChuteCase c;
+  c.angle_deg = angle;
+  c.h0 = h0;
+  const SteadyState base = c.steady();
+  const double growth = linear2d::surface_eigenmode(base, c.make_curve(), Lx).growth_rate();
+  TwodSettings s;
+  s.nz = preset_nz;
+  s.aimed_growth_deficit = aim;
+  s.Lz_over_h0 = Lz_over_h0;
+  const TwodSettings r = s.refined_across(Lx, base, growth, seed.a0, seed.t_end);
+  auto expected_share = [&](int nz) {
+    TwodSettings t = r;
+    t.nz = nz;
+    return expected_twod_growth_deficit(base, t.domain_height(h0) / nz, Lx) / growth;
   };
-  // section 7 (28.5 degrees, 4 mm; cutoff near 1.38 cm), the default preset
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.08, 64, 0.075), 64);
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.03, 64, 0.075), 64);
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.025, 64, 0.075), 80);
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.02, 64, 0.075), 96);  // 6.4 % expected: kept
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.016, 64, 0.075), 176);
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.015, 64, 0.075), 256);  // 19.5 % expected on 128
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.014, 64, 0.075), 256);  // the cap
+  const int n = r.nz, by_wavelength = s.cells_across(Lx, h0);
+  TwodSettings w = s;  // the wavelength's grid
+  w.nz = by_wavelength;
+  const double dz_by_wavelength = w.domain_height(h0) / by_wavelength;
+  EXPECT_EQ(n % 16, 0);
+  // no taller cells than the wavelength's grid's
+  EXPECT_LE(r.domain_height(h0) / n, dz_by_wavelength * (1 + 1e-12)) << Lx;
+  const int cap = static_cast<int>(TwodSettings::max_law_refinement) * preset_nz;
+  EXPECT_LE(n, cap);
+  const bool refined = expected_twod_growth_deficit(base, dz_by_wavelength, Lx) > aim * growth;
+  const bool small = seed.a0 * std::exp(growth * seed.t_end) <= 0.05 * h0;
+  EXPECT_EQ(r.light_layer_over_h0, refined && small && Lz_over_h0 == 0.0 ? 0.25 : 1.0) << Lx;
+  if (!refined) {
+    EXPECT_EQ(n, by_wavelength) << Lx;
+  }
+  if (refined && n < cap) {  // the fewest that meet the aim
+    EXPECT_LE(expected_share(n), aim) << Lx;
+    EXPECT_GT(expected_share(n - 16), aim) << Lx;
+  }
+  for (const double unknown : {double(NAN), -1.0}) {
+    const TwodSettings by_length = s.refined_across(Lx, base, unknown, seed.a0, seed.t_end);
+    EXPECT_EQ(by_length.nz, by_wavelength);
+    EXPECT_EQ(by_length.light_layer_over_h0, 1.0);
+  }
+  return r;
+}
+
+TEST(TwodSettings, NearTheCutoffTheDeficitLawAddsCellsAcrossTheLayer) {
+  auto nz = [](double angle, double h0, double Lx, int preset_nz, double aim, SeedAndRun seed) {
+    return law_grid(angle, h0, Lx, preset_nz, aim, seed).nz;
+  };
+  // section 7 (28.5 degrees, 4 mm; cutoff near 1.38 cm), the default preset, under h0 of light
+  // fluid (the paper's sine start grows beyond h0/20)
+  EXPECT_EQ(nz(28.5, 4e-3, 0.08, 64, 0.075, kPaperRun), 64);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.03, 64, 0.075, kPaperRun), 64);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.025, 64, 0.075, kPaperRun), 80);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.02, 64, 0.075, kPaperRun), 96);  // 6.4 % expected: kept
+  EXPECT_EQ(nz(28.5, 4e-3, 0.016, 64, 0.075, kPaperRun), 176);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.015, 64, 0.075, kPaperRun), 256);  // 19.5 % expected on 128
+  EXPECT_EQ(nz(28.5, 4e-3, 0.014, 64, 0.075, kPaperRun), 384);  // the cap
   // the coarse preset aims at 3/4 of its 25 %
-  EXPECT_EQ(law_grid(28.5, 4e-3, 0.015, 32, 0.1875), 128);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.015, 32, 0.1875, kPaperRun), 144);
   // 28 degrees, 5 mm (cutoff near 1.75 cm): 2 cm was 12.2 % under on 128 cells
-  EXPECT_EQ(law_grid(28.0, 5e-3, 0.02, 64, 0.075), 192);
-  EXPECT_EQ(law_grid(28.0, 5e-3, 0.025, 64, 0.075), 96);
+  EXPECT_EQ(nz(28.0, 5e-3, 0.02, 64, 0.075, kPaperRun), 192);
+  EXPECT_EQ(nz(28.0, 5e-3, 0.025, 64, 0.075, kPaperRun), 96);
+  // The same waves seeded small, as compare and sweep run them: the grids the law keeps are the
+  // same, and where it refines, the thin light layer gives the same cells per h0 in fewer rows.
+  EXPECT_EQ(nz(28.5, 4e-3, 0.08, 64, 0.075, kLinearRun), 64);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.02, 64, 0.075, kLinearRun), 96);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.016, 64, 0.075, kLinearRun), 112);
+  EXPECT_EQ(nz(28.5, 4e-3, 0.015, 64, 0.075, kLinearRun), 160);  // 127.5 cells per h0, as above
+  EXPECT_EQ(nz(28.5, 4e-3, 0.014, 64, 0.075, kLinearRun), 384);  // the cap: 307 per h0
+  EXPECT_EQ(nz(28.5, 4e-3, 0.015, 32, 0.1875, kLinearRun), 96);  // 76 per h0, under the cap
+  EXPECT_EQ(nz(28.0, 5e-3, 0.02, 64, 0.075, kLinearRun), 128);
+  EXPECT_EQ(nz(28.0, 5e-3, 0.025, 64, 0.075, kLinearRun), 96);
+  // a domain of given height keeps it
+  EXPECT_EQ(law_grid(28.5, 4e-3, 0.015, 64, 0.075, kLinearRun, 2.0).nz, 256);
+}
+
+// The thin light layer keeps the surface mid-cell: 306.5 cells below it at 1.4 cm on 384 rows.
+TEST(TwodSettings, TheThinLightLayerKeepsTheSurfaceMidCell) {
+  const TwodSettings r = law_grid(28.5, 4e-3, 0.014, 64, 0.075, kLinearRun);
+  EXPECT_EQ(r.nz, 384);
+  EXPECT_NEAR(r.domain_height(4e-3) / r.nz * 306.5, 4e-3, 1e-15);
 }
 
 TEST(TwodSettings, RecordedRunCommandRebuildsTheSameSolverParameters) {

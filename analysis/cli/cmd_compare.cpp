@@ -73,6 +73,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   std::vector<std::string> warnings = twod_warnings(chute.steady(), dz, chute.Lx);
   if (auto w = twod_grid_cost_warning(twod.nx, twod.nz, chute.Lx / twod.nx / dz))
     warnings.push_back(*w);
+  if (o.extrapolate)
+    if (auto w = thin_layer_extrapolation_warning(twod)) warnings.push_back(*w);
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave

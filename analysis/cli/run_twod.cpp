@@ -172,6 +172,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
         *w += extrapolate_suggestion("the wave");
       warnings.push_back(*w);
     }
+  if (mo.extrapolate)
+    if (auto w = thin_layer_extrapolation_warning(twod_run_settings(o, mo))) warnings.push_back(*w);
   Solver solver(grid, params,
                 restart ? restart->state
                         : make_initial_state(grid,

@@ -210,6 +210,12 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
       continue;  // no surface mode: the point reports that itself
     }
     const TwodSettings point = point_twod_settings(spec, Lx, growth);
+    if (spec.twod_extrapolate)
+      if (auto w = thin_layer_extrapolation_warning(point)) {
+        std::ostringstream named;
+        named << "Lx = " << Lx << " m: " << *w;
+        plan.warnings.push_back(named.str());
+      }
     const double dz = point.domain_height(o.flow.h0) / point.nz;
     if (auto w =
             twod_growth_accuracy_warning(base, dz, Lx, growth, point.domain_height(o.flow.h0))) {

@@ -165,19 +165,24 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
 // the deficit expected there). A point whose exact 2D growth is small against its grid's expected
 // deficit, even on the most cells the deficit law gives it, is named with its length. A
 // depth-averaged sweep gets none.
+// The plan's warnings, physics ones included, for these sweep arguments.
+std::vector<std::string> plan_warnings(std::vector<std::string> args) {
+  CLI::App app;
+  SweepOptions o;
+  add_sweep_options(app, o);
+  std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+  app.parse(args);
+  SweepPlan plan = plan_sweep(o, app);
+  add_growth_accuracy_warnings(o, plan);
+  return plan.warnings;
+}
+
 TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
   auto warnings = [](const std::string& model, const std::string& Lx,
                      const std::string& resolution) {
-    CLI::App app;
-    SweepOptions o;
-    add_sweep_options(app, o);
     std::vector<std::string> args = {"--model", model, "--Lx", Lx};
     if (!resolution.empty()) args.insert(args.end(), {"--resolution", resolution});
-    std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
-    app.parse(args);
-    SweepPlan plan = plan_sweep(o, app);
-    add_growth_accuracy_warnings(o, plan);
-    return plan.warnings;
+    return plan_warnings(args);
   };
   EXPECT_TRUE(warnings("twod", "0.02:0.08:4", "").empty());
   EXPECT_TRUE(warnings("both", "0.04:0.08:3", "default").empty());
@@ -201,17 +206,10 @@ TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
 // --extrapolate on a point under the thin light layer of the near-cutoff grids is warned of: the
 // deficit law's order did not hold there at 1.4 cm. Points under h0 of light fluid are not named.
 TEST(SweepSettings, AnExtrapolationOnTheThinLightLayerIsWarnedOf) {
-  CLI::App app;
-  SweepOptions o;
-  add_sweep_options(app, o);
-  std::vector<std::string> args = {"--model", "twod", "--Lx", "0.014:0.02:2", "--extrapolate"};
-  std::reverse(args.begin(), args.end());
-  app.parse(args);
-  SweepPlan plan = plan_sweep(o, app);
-  add_growth_accuracy_warnings(o, plan);
-  ASSERT_EQ(plan.warnings.size(), 1u);
-  EXPECT_EQ(plan.warnings[0].find("Lx = 0.014 m: --extrapolate on the thin light layer"), 0u)
-      << plan.warnings[0];
+  const auto warnings = plan_warnings({"--model", "twod", "--Lx", "0.014:0.02:2", "--extrapolate"});
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].find("Lx = 0.014 m: --extrapolate on the thin light layer"), 0u)
+      << warnings[0];
 }
 
 // --extrapolate needs a half grid within the deficit law's range: refused on the coarse preset.

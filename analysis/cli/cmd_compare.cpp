@@ -63,6 +63,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
                                theory ? theory->exact_2d.growth_rate : NAN, chute.a0, chute.t_end);
   twod.viscosity_passes = o.viscosity_passes;
   twod.frame_fraction = o.twod_frame;
+  twod.cfl = o.cfl;
   // About 1 kB of fields and solver work per 2D cell: 4 M cells is some 4 GB, the most a run of
   // this tool on a workstation should ask for; beyond it the allocation would fail mid-run.
   constexpr long kMaxTwodCells = 1L << 22;

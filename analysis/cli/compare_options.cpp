@@ -47,6 +47,7 @@ void add_compare_options(CLI::App& sub, CompareOptions& o) {
                  "halves the steps, 0 is the lab frame; output is in the lab frame either way")
       ->check(closed_range(0.0, 1.0))
       ->capture_default_str();
+  add_twod_cfl_option(sub, o.cfl);
   sub.add_flag("--extrapolate", o.extrapolate,
                "run the 2D model again on half the cells across the layer and report its growth "
                "rate extrapolated to cells of no height (the measured order 1.4, bounds from "

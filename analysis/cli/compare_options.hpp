@@ -8,6 +8,7 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/comparison/chute_case.hpp"
+#include "analysis/comparison/twod_settings.hpp"
 
 namespace granbench::cli {
 
@@ -25,8 +26,9 @@ struct CompareOptions {
   std::size_t nx_depthavg = 0;         // 0: from --resolution
   std::string frame_speed = "linear";  // depth-averaged frame: linear (co-moving) or 0 (lab)
   int viscosity_passes = 1;
-  double twod_frame = 0.5;   // the 2D grid's speed / surface speed (TwodSettings::frame_fraction)
-  bool extrapolate = false;  // the 2D growth also from half the cells across the layer
+  double twod_frame = 0.5;  // the 2D grid's speed / surface speed (TwodSettings::frame_fraction)
+  double cfl = TwodSettings{}.cfl;  // the 2D time step's Courant number per direction
+  bool extrapolate = false;         // the 2D growth also from half the cells across the layer
 };
 
 // Adds the options of this file's struct (not the flow and output options) to `sub`.

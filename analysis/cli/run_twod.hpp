@@ -47,6 +47,8 @@ struct TwodOptions {
   bool extrapolate = false;
 };
 void add_twod_options(CLI::App& app, TwodOptions& o);  // twod_options.cpp
+// --cfl, the 2D time step's Courant number, for run, compare and sweep alike (twod_options.cpp)
+void add_twod_cfl_option(CLI::App& app, double& cfl);
 // How the default 2D grid refines across the layer, for the help of compare's and sweep's
 // --resolution and run's --nz: "for a wave under 7.5 h0 up to 2x the cells across the layer, ...",
 // from the rules' own constants (TwodSettings, grid_preset), so the three texts cannot drift.

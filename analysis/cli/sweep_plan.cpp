@@ -50,6 +50,7 @@ void refuse_options_that_do_not_apply(const SweepOptions& o, const CLI::App& app
                         {"--resolution", {"twod", "both"}},
                         {"--viscosity-passes", {"twod", "both"}},
                         {"--twod-frame", {"twod", "both"}},
+                        {"--cfl", {"twod", "both"}},
                         {"--extrapolate", {"twod", "both"}}};
   for (const Rule& r : rules) {
     const CLI::Option* opt = app.get_option_no_throw(r.option);
@@ -98,6 +99,7 @@ void add_sweep_options(CLI::App& sub, SweepOptions& o) {
                  "halves the steps, 0 is the lab frame; output is in the lab frame either way")
       ->check(closed_range(0.0, 1.0))
       ->capture_default_str();
+  add_twod_cfl_option(sub, o.cfl);
   sub.add_option("--viscosity-passes", o.viscosity_passes,
                  "2D predictor-projection passes per step (--model twod|both), in [1, 4]")
       ->check(count_range(1, 4))
@@ -158,6 +160,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
     spec.twod_settings.aimed_growth_deficit = grid_preset(o.resolution).twod_aimed_growth_deficit;
     spec.twod_settings.viscosity_passes = o.viscosity_passes;
     spec.twod_settings.frame_fraction = o.twod_frame;
+    spec.twod_settings.cfl = o.cfl;
     spec.twod_extrapolate = o.extrapolate;
     if (o.extrapolate) {  // every point's half grid within the deficit law's range
       for (const double Lx : spec.Lx) {
@@ -176,6 +179,7 @@ SweepPlan plan_sweep(const SweepOptions& o, const CLI::App& app) {
                      {"resolution", o.resolution},
                      {"viscosity_passes", o.viscosity_passes},
                      {"twod_frame", o.twod_frame},
+                     {"cfl", o.cfl},
                      {"extrapolate", o.extrapolate},
                      {"twod_nx", spec.twod_settings.nx},
                      {"twod_nz", spec.twod_settings.nz},

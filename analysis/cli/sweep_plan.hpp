@@ -32,6 +32,7 @@ struct SweepOptions {
   std::string resolution = "default";  // 2D grid of --model twod|both (32 cells per h0)
   int viscosity_passes = 1;            // of --model twod|both
   double twod_frame = 0.5;             // of --model twod|both: TwodSettings::frame_fraction
+  double cfl = TwodSettings{}.cfl;     // of --model twod|both: the 2D time step's Courant number
   bool extrapolate = false;            // of --model twod|both: SweepSpec::twod_extrapolate
 };
 

@@ -65,6 +65,12 @@ TEST(CliConventions, BoundedOptionsNameTheirIntervals) {
   expect_refused("run --noise 0.5", "--noise: value 0.5 out of range", {"valid range [0, 0.5)"});
   expect_refused("sweep --jobs 0", "--jobs: value 0 out of range", {"valid range [1, 256]"});
   expect_refused("run --model twod --twod-frame 1.5", "--twod-frame:", {"valid range [0, 1]"});
+  // the 2D Courant number: the same interval in run, compare and sweep
+  expect_refused("run --model twod --cfl 1", "--cfl: value 1 out of range", {"(0, 1)"});
+  expect_refused("compare --cfl 0", "--cfl: value 0 out of range", {"(0, 1)"});
+  expect_refused("sweep --model twod --Lx 0.08:0.08:1 --cfl 1.5", "--cfl:", {"(0, 1)"});
+  expect_refused("sweep --model depthavg --Lx 0.08:0.08:1 --cfl 0.8", "--cfl: does not apply",
+                 {"--model twod or --model both"});
   expect_refused("run --model twod --nz abc", "--nz: 'abc' is not a number", {"[4, 4096]"});
   expect_refused("run --mode 0", "--mode: value 0 out of range", {"valid range [1, nx/2]"});
   expect_refused("run --mode 200", "--mode: value 200 out of range", {"[1, nx/2] (nx = 256)"});

@@ -90,6 +90,22 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
 INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// The 2D step's Courant number, new to compare (thirty-seventh session), reaches its 2D run and
+// is recorded with the inputs; above the VOF's 1/2, where the volume fractions sub-step.
+TEST(Provenance, CompareRecordsTheCourantNumberItWasGiven) {
+  const fs::path dir = fs::temp_directory_path() / ("gb_prov_cfl_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "compare.h5").string();
+  const auto r = run_granbench(
+      "compare --nx 16 --nz 8 --nx-depthavg 16 --t-end 1e-3 --cfl 0.8 "
+      "--quiet --out " +
+          out,
+      "prov_cfl_" + std::to_string(getpid()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(h5_read_double_attribute(out, "/", "twod_cfl"), 0.8);
+  fs::remove_all(dir);
+}
+
 TEST(Version, PrintsTheVersionAndTheCommit) {
   const auto r = run_granbench("--version", "version_" + std::to_string(getpid()));
   EXPECT_EQ(r.code, 0) << r.err;

@@ -7,7 +7,8 @@
 #
 #   bench/gerris_side_by_side.sh [build-dir] [t_end seconds] [LEVEL]
 # Installs gerris2D (Debian package gerris) when missing; reads the case from shared/ beside the
-# repository (or GERRIS_CASE).
+# repository (or GERRIS_CASE). GRANBENCH_OPTIONS adds options to granbench's run (e.g.
+# "--cfl 0.8"; default none: granbench's defaults).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build}
@@ -33,10 +34,11 @@ g_end=$(date +%s.%N)
 
 o_start=$(date +%s.%N)
 /usr/bin/time -f "%U %S" -o "$here/otime" "$build/granbench" run --model twod --nx "$nx" --nz "$nz" \
-  --Lx 0.08 --h0 0.004 --a0 2e-4 --angle 28.5 --t-end "$t_end" --json --quiet > "$here/ours.json"
+  --Lx 0.08 --h0 0.004 --a0 2e-4 --angle 28.5 --t-end "$t_end" ${GRANBENCH_OPTIONS:-} --json --quiet \
+  > "$here/ours.json"
 o_end=$(date +%s.%N)
 
-python3 - "$here" "$g_start" "$g_end" "$o_start" "$o_end" "$t_end" "$nx" "$nz" <<'PY'
+python3 - "$here" "$g_start" "$g_end" "$o_start" "$o_end" "$t_end" "$nx" "$nz" "${GRANBENCH_OPTIONS:-}" <<'PY'
 import json, sys
 d, gs, ge, os_, oe, t = sys.argv[1], *map(float, sys.argv[2:7])
 nx, nz = sys.argv[7], sys.argv[8]
@@ -47,6 +49,6 @@ print(json.dumps({
     "cells": f"{nx}x{nz}", "t_end": t,
     "gerris": {"wall_seconds": ge - gs, "cpu_seconds": gu + gsys},
     "granbench_twod": {"wall_seconds": oe - os_, "cpu_seconds": ou + osys, "steps": ours["steps"],
-                       "mass_error": ours["mass_error"]},
+                       "mass_error": ours["mass_error"], "options": sys.argv[9]},
     "speedup_wall": (ge - gs) / (oe - os_), "speedup_cpu": (gu + gsys) / (ou + osys)}, indent=2))
 PY

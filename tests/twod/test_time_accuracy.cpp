@@ -124,8 +124,8 @@ TEST(TimeAccuracy, SurfaceLayerWavelengthDecaysAtTheSameRateForEveryStep) {
 }
 
 TEST(TimeAccuracy, SurfaceLayerWavelengthStaysDampedAndConvergesWithTheDefaultTransport) {
-  // (cfl 0.8, above the VOF's 1/2: the volume fractions take two sub-steps per step, the
-  // momentum transport one step; `--cfl` allows it)
+  // (cfl 0.8, above the VOF's 1/2: a step whose face Courant number exceeds 1/2 moves the volume
+  // fractions in sub-steps, the momentum in one; `--cfl` allows it)
   const double r8 = box_decay_rate(0.8, true), r4 = box_decay_rate(0.4, true),
                r2 = box_decay_rate(0.2, true), r1 = box_decay_rate(0.1, true);
   vt::VerificationTable table(

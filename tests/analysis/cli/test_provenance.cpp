@@ -96,11 +96,9 @@ TEST(Provenance, CompareRecordsTheCourantNumberItWasGiven) {
   const fs::path dir = fs::temp_directory_path() / ("gb_prov_cfl_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string out = (dir / "compare.h5").string();
-  const auto r = run_granbench(
-      "compare --nx 16 --nz 8 --nx-depthavg 16 --t-end 1e-3 --cfl 0.8 "
-      "--quiet --out " +
-          out,
-      "prov_cfl_" + std::to_string(getpid()));
+  const std::string args = "compare --nx 16 --nz 8 --nx-depthavg 16 --t-end 1e-3 --cfl 0.8";
+  const auto r =
+      run_granbench(args + " --quiet --out " + out, "prov_cfl_" + std::to_string(getpid()));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(h5_read_double_attribute(out, "/", "twod_cfl"), 0.8);
   fs::remove_all(dir);

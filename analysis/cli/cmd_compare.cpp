@@ -76,6 +76,9 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
     warnings.push_back(*w);
   if (o.extrapolate)
     if (auto w = thin_layer_extrapolation_warning(twod)) warnings.push_back(*w);
+  if (!saturated.enabled)  // (the saturated wave does not rest on the early growth)
+    if (auto w = large_step_sine_start_warning(twod.cfl, chute.seed == Seed::Sine))
+      warnings.push_back(*w);
   DepthAvgSettings depthavg;
   depthavg.nx = o.nx_depthavg > 0 ? o.nx_depthavg : res.depthavg_nx;
   depthavg.limiter = o.paper;  // the paper's amplitude saturates into a rollwave

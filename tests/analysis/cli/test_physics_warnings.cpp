@@ -2,15 +2,18 @@
 // coarser than 32 cells per h0 and a wave shorter than 7.5 h0 on fewer cells per h0 than compare
 // and sweep give it (32 refined as 7.5 h0 / wavelength) are named, and so is a growth rate small
 // against the grid's expected deficit; a well-posed base state's 8 cm wave on the trusted grid
-// gets none.
+// gets none. A 2D step above 1/2 on a sine start is named too (in process and end to end).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "analysis/cli/physics_warnings.hpp"
 #include "common/mu_curves.hpp"
+#include "tests/support/run_granbench.hpp"
 
 using namespace granbench;
 
@@ -114,4 +117,32 @@ TEST(PhysicsWarnings, AGridTheMultigridCannotCoarsenIsNamed) {
   EXPECT_FALSE(cli::twod_grid_cost_warning(160, 96, 1.0).has_value());
   // 130 x 96 on square cells halves along x once, to 65 x 96 = 6 240 cells: named
   EXPECT_TRUE(cli::twod_grid_cost_warning(130, 96, 1.0).has_value());
+}
+
+TEST(PhysicsWarnings, AStepAboveOneHalfOnASineStartIsNamed) {
+  const auto large = cli::large_step_sine_start_warning(0.8, true);
+  ASSERT_TRUE(large.has_value());
+  EXPECT_EQ(large->find("--cfl 0.8 with the sine start"), 0u) << *large;
+  EXPECT_FALSE(cli::large_step_sine_start_warning(0.5, true).has_value());
+  EXPECT_FALSE(cli::large_step_sine_start_warning(0.4, true).has_value());
+  EXPECT_FALSE(cli::large_step_sine_start_warning(0.9, false).has_value());  // the eigenmode
+
+  // End to end: run's default start is the sine; compare's the eigenmode unless --init sine.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("gb_large_step_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const auto named = [&](const std::string& args) {
+    const auto r = granbench::testing::run_granbench(
+        args + " --quiet --out " + (dir / "out.h5").string(), "large_step");
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    fs::remove(dir / "out.h5");
+    return r.err.find("warning: --cfl 0.8 with the sine start") != std::string::npos;
+  };
+  const std::string run = "run --model twod --nx 16 --nz 8 --t-end 1e-4 --checkpoint-every 0 ";
+  const std::string compare = "compare --nx 16 --nz 8 --nx-depthavg 16 --t-end 1e-3 ";
+  EXPECT_TRUE(named(run + "--cfl 0.8"));
+  EXPECT_FALSE(named(run + "--cfl 0.8 --init eigenmode"));
+  EXPECT_TRUE(named(compare + "--cfl 0.8 --init sine"));
+  EXPECT_FALSE(named(compare + "--cfl 0.8"));
+  fs::remove_all(dir);
 }

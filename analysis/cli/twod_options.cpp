@@ -142,15 +142,15 @@ ChuteCase chute_case(const RunOptions& o) {
 twod::SolverParams twod_run_params(const RunOptions& o, const TwodOptions& mo, double& Lz) {
   if (o.noise != 0.0) throw UsageError("--noise: not available for --model twod; valid value 0");
   o.flow.steady();  // no steady flow: an error on --angle
-  Lz = mo.Lz > 0.0 ? mo.Lz
-                   : twod::mid_cell_domain_height(o.flow.h0, mo.settings.nz,
-                                                  1.0 + mo.settings.light_layer_over_h0);
+  const TwodSettings settings = twod_run_settings(o, mo);
+  // (a given --Lz as given: Lz_over_h0 times h0 could differ from it in the last bit)
+  Lz = mo.Lz > 0.0 ? mo.Lz : settings.domain_height(o.flow.h0);
   if (!(Lz > o.flow.h0 + o.a0))
     throw UsageError("--Lz: " + std::to_string(Lz) + " out of range; valid range (h0 + a0, inf)");
   if (!(mo.settings.eta_min < mo.settings.eta_max))
     throw UsageError("--eta-min: must be below --eta-max (" + std::to_string(mo.settings.eta_max) +
                      ")");
-  return twod_solver_params(chute_case(o), twod_run_settings(o, mo));
+  return twod_solver_params(chute_case(o), settings);
 }
 
 TwodSettings twod_run_settings(const RunOptions& o, const TwodOptions& mo) {

@@ -67,6 +67,7 @@ struct CvodeIntegrator::Impl {
   std::size_t nonfinite = SIZE_MAX;  // last component where U or F(U) was not finite
   std::string last_error;
   double t = 0.0;
+  long max_steps = 0;  // IntegratorParams::max_steps: the most internal steps of one advance
 
   Impl(const Rhs& r)
       : rhs(r),
@@ -231,7 +232,9 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
   check(CVodeInit(m.mem, &Impl::rhs_cb, 0.0, m.y), "CVodeInit");
   check(CVodeSVtolerances(m.mem, p.rtol, m.atol), "CVodeSVtolerances");
   check(CVodeSetUserData(m.mem, &m), "CVodeSetUserData");
-  check(CVodeSetMaxNumSteps(m.mem, p.max_steps), "CVodeSetMaxNumSteps");
+  m.max_steps = p.max_steps;
+  if (p.steps_per_call < 1) throw std::invalid_argument("CvodeIntegrator: steps_per_call < 1");
+  check(CVodeSetMaxNumSteps(m.mem, std::min(p.max_steps, p.steps_per_call)), "CVodeSetMaxNumSteps");
   check(CVodeSetMaxOrd(m.mem, p.max_order), "CVodeSetMaxOrd");
   check(CVodeSetConstraints(m.mem, m.constraints), "CVodeSetConstraints");
 
@@ -262,17 +265,41 @@ CvodeIntegrator::CvodeIntegrator(const Rhs& rhs, std::span<const double> U0,
 
 CvodeIntegrator::~CvodeIntegrator() = default;
 
-AdvanceResult CvodeIntegrator::advance_to(double t_out) {
+AdvanceResult CvodeIntegrator::advance_to(double t_out, const AdvanceLimits& limits) {
   Impl& m = *impl_;
   AdvanceResult res;
   sunrealtype t_reached = m.t;
-  const int flag = CVode(m.mem, t_out, m.y, &t_reached, CV_NORMAL);
+  long steps_before = 0, steps_now = 0;
+  CVodeGetNumSteps(m.mem, &steps_before);
+  int flag = CV_SUCCESS;
+  for (;;) {
+    flag = CVode(m.mem, t_out, m.y, &t_reached, CV_NORMAL);
+    CVodeGetNumSteps(m.mem, &steps_now);
+    res.steps = steps_now - steps_before;
+    if (flag != CV_TOO_MUCH_WORK) break;  // (a chunk's end: CVODE continues on the next call)
+    if (limits.stop && limits.stop->load()) {
+      res.interrupted = true;
+      break;
+    }
+    if (limits.stall_steps > 0 && res.steps >= limits.stall_steps) {
+      res.stalled = true;
+      break;
+    }
+    if (res.steps >= m.max_steps) break;
+  }
   m.t = t_reached;
   res.t = t_reached;
+  sunrealtype last_step = 0.0;
+  if (CVodeGetLastStep(m.mem, &last_step) == CV_SUCCESS) res.last_step = last_step;
+  if (res.interrupted) return res;
   if (flag < 0) {
     res.ok = false;
-    res.message =
-        m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag) : m.last_error;
+    if (flag == CV_TOO_MUCH_WORK)
+      res.message = "CVODE took " + std::to_string(res.steps) +
+                    " steps without reaching t = " + std::to_string(t_out) + " s";
+    else
+      res.message =
+          m.last_error.empty() ? "CVODE failed with flag " + std::to_string(flag) : m.last_error;
     if (m.nonfinite != SIZE_MAX) {
       res.worst = m.nonfinite;
       res.nonfinite = true;

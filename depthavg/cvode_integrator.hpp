@@ -21,6 +21,7 @@
 // change the total mass only at round-off.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -47,13 +48,28 @@ struct CvodeStats {
   long total_rhs_evals() const { return rhs_evals + rhs_evals_jtimes + rhs_evals_jacobian; }
 };
 
+// What ends an advance early besides CVODE's own failures. CVODE is called in chunks of at most
+// IntegratorParams::steps_per_call internal steps (the steps are the same as in one call: CVODE
+// resumes where it returned), and between chunks the stop flag and the step count are looked at, so
+// that Ctrl-C is seen within a fraction of a second and an integration whose steps have collapsed
+// (a shock or a dry bed the grid no longer resolves) is caught after stall_steps instead of
+// IntegratorParams::max_steps: two million steps took five minutes on 256 cells.
+struct AdvanceLimits {
+  const std::atomic<bool>* stop = nullptr;  // raised: return with `interrupted` after the chunk
+  long stall_steps = 0;  // more internal steps than this in one advance: `stalled` (0: none)
+};
+
 struct AdvanceResult {
   bool ok = true;
-  double t = 0.0;          // time reached
-  std::string message;     // CVODE's message when !ok
-  std::size_t worst = 0;   // the component that was not finite, or else the one with the
-                           // largest weighted local error estimate
-  bool nonfinite = false;  // worst names a non-finite value of U or F(U)
+  double t = 0.0;            // time reached
+  std::string message;       // CVODE's message (or the step limit's) when !ok
+  std::size_t worst = 0;     // the component that was not finite, or else the one with the
+                             // largest weighted local error estimate
+  bool nonfinite = false;    // worst names a non-finite value of U or F(U)
+  bool interrupted = false;  // the stop flag ended the advance before t_out (ok stays true)
+  bool stalled = false;      // AdvanceLimits::stall_steps ended it (ok is false)
+  long steps = 0;            // internal steps of this advance
+  double last_step = 0.0;    // the size of the last of them [s]
 };
 
 class CvodeIntegrator {
@@ -66,7 +82,7 @@ class CvodeIntegrator {
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
-  AdvanceResult advance_to(double t_out);
+  AdvanceResult advance_to(double t_out, const AdvanceLimits& limits = {});
   std::span<const double> state() const;
   double time() const;
   CvodeStats stats() const;

@@ -42,6 +42,9 @@ struct IntegratorParams {
   double rtol = 1e-6;
   double atol = 1e-10;       // absolute tolerance, scaled per component (h in m, hu in m^2/s)
   long max_steps = 2000000;  // per output interval
+  // CVODE is called for at most this many internal steps at a time; between calls the run looks
+  // at the stop flag and at a stall (cvode_integrator.hpp). The steps are those of one call.
+  long steps_per_call = 2000;
   // BDF order limit. Orders 3-5 are not A-stable: near the imaginary axis, where a hyperbolic
   // semi-discretisation's eigenvalues lie, they are unstable over a band of steps, and CVODE then
   // holds the step at that band whatever the tolerance (the rollwave of `run` took 5 900-7 300

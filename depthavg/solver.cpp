@@ -1,9 +1,11 @@
 // Run loop of the depth-averaged solver: sampling, progress, interruption, divergence detection.
 #include "depthavg/solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <iomanip>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -51,6 +53,16 @@ void translate(RealFFT& fft, std::vector<double>& v, double distance) {
   v = fft.inverse(V);
 }
 
+// The time the base flow's fastest wave, u + sqrt(g h cos(zeta)) in the lab frame, takes to
+// cross a cell. A working integration takes about one step per crossing at the default
+// tolerances, a few at the tightest ones; the stall limit below is a thousand per crossing.
+double cell_crossing_time(const Rhs& rhs) {
+  const SteadyState& b = rhs.base();
+  return rhs.dx() / (std::fabs(b.u_mean) + std::sqrt(b.material.g * std::cos(b.zeta) * b.h0));
+}
+constexpr double kStallStepsPerCrossing = 1000.0;
+constexpr long kStallStepsAtLeast = 10000;
+
 }  // namespace
 
 Solver::Solver(const SteadyState& base, const MuCurve& curve, const SpaceParams& space,
@@ -97,15 +109,36 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
   res.mass_initial = mass_of(U0, rhs_.dx());
 
   const auto n_samples = static_cast<std::size_t>(std::ceil(out.t_end / out.dt_out - 1e-9));
+  const double crossing = cell_crossing_time(rhs_);
   try {
     for (std::size_t n = 1; n <= n_samples; ++n) {
       const double t_out = std::min(static_cast<double>(n) * out.dt_out, out.t_end);
-      const AdvanceResult adv = integ.advance_to(t_out);
+      AdvanceLimits limits;
+      limits.stop = cb.stop;
+      limits.stall_steps = std::max(
+          kStallStepsAtLeast,
+          static_cast<long>(std::ceil(kStallStepsPerCrossing * (t_out - integ.time()) / crossing)));
+      const AdvanceResult adv = integ.advance_to(t_out, limits);
+      if (adv.interrupted) {
+        res.status = RunStatus::Interrupted;
+        res.message = "interrupted at t = " + std::to_string(adv.t) +
+                      " s (the last sample at t = " + std::to_string(res.series.t.back()) + " s)";
+        break;
+      }
       if (!adv.ok) {
         std::ostringstream s;
-        s << "diverged at t = " << adv.t << " s: CVODE could not continue (" << adv.message << "); "
-          << (adv.nonfinite ? "non-finite " : "largest local error in ") << quantity_name(adv.worst)
-          << " at x = " << rhs_.x(adv.worst / 2) << " m";
+        s << "diverged at t = " << adv.t << " s: ";
+        if (adv.stalled)
+          s << std::setprecision(3) << "the integration stalled (" << adv.steps
+            << " CVODE steps since t = " << res.series.t.back() << " s, the last of "
+            << adv.last_step << " s, " << adv.last_step / crossing << " of the " << crossing
+            << " s a wave takes to cross a cell: a front or a dry bed the grid no longer "
+               "resolves)"
+            << std::setprecision(6);
+        else
+          s << "CVODE could not continue (" << adv.message << ")";
+        s << "; " << (adv.nonfinite ? "non-finite " : "largest local error in ")
+          << quantity_name(adv.worst) << " at x = " << rhs_.x(adv.worst / 2) << " m";
         res.status = RunStatus::Diverged;
         res.message = s.str();
         break;

@@ -39,7 +39,7 @@ struct RunResult {
 
 struct RunCallbacks {
   std::function<void(double t, double t_end)> progress;  // after each sample, may be empty
-  const std::atomic<bool>* stop = nullptr;               // checked after each sample
+  const std::atomic<bool>* stop = nullptr;  // checked after each sample and each chunk of steps
 };
 
 class Solver {

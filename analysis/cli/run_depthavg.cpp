@@ -121,7 +121,15 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
     throw CommandFailed(r.message + "; the samples computed so far were kept", guard.exit_code());
   if (r.status == depthavg::RunStatus::Failed)
     throw CommandFailed(r.message + "; the samples computed so far were kept", kExitRunFailed);
-  if (r.status == depthavg::RunStatus::Diverged) throw CommandFailed(r.message, kExitRunFailed);
+  if (r.status == depthavg::RunStatus::Diverged) {
+    // The unlimited slopes suit linear runs; a front steep enough to oscillate is their usual end.
+    const bool unlimited = space.reconstruction == depthavg::Reconstruction::Central;
+    throw CommandFailed(
+        r.message + (unlimited ? "; the slopes were unlimited (--limiter central): "
+                                 "--limiter vanalbada keeps steep fronts free of oscillations"
+                               : ""),
+        kExitRunFailed);
+  }
 }
 
 }  // namespace granbench::cli

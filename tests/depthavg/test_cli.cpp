@@ -99,6 +99,28 @@ TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
   std::filesystem::remove(out);
 }
 
+TEST(DepthAvgCli, AStalledRunSaysSoWithinSecondsAndNamesTheLimiter) {
+  // 40 degrees, unlimited slopes: the fronts oscillate until CVODE's steps collapse. The run
+  // stops as diverged (exit 3) with the stall and the way out in its one line, keeps its samples
+  // in --out, and a limited reconstruction runs the same case to the end.
+  const std::string out = (std::filesystem::temp_directory_path() /
+                           ("gb_cli_stall_" + std::to_string(getpid()) + ".h5"))
+                              .string();
+  std::filesystem::remove(out);
+  const std::string args =
+      "run --model depthavg --angle 40 --Lx 0.08 --nx 32 --t-end 0.1 --quiet --out " + out;
+  const auto r = granbench(args);
+  EXPECT_EQ(r.code, 3);
+  const std::string err = last_stderr();
+  EXPECT_NE(err.find("the integration stalled"), std::string::npos) << err;
+  EXPECT_NE(err.find("--limiter vanalbada"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  std::filesystem::remove(out);
+  EXPECT_EQ(granbench(args + " --limiter vanalbada").code, 0) << last_stderr();
+  std::filesystem::remove(out);
+}
+
 TEST(DepthAvgCli, SweepReportsPointsBesideTheExactRelation) {
   const auto r = granbench("sweep --model depthavg --Lx 0.05:0.1:2 --nx 128 --jobs 2 --json");
   ASSERT_EQ(r.code, 0) << last_stderr();

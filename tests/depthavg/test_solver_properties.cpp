@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <vector>
 
 #include "analysis/spectral/wave_speed.hpp"
 #include "analysis/theory/dispersion.hpp"
@@ -235,6 +236,80 @@ TEST(DepthAvgSolver, StopFlagKeepsWhatWasComputed) {
   EXPECT_EQ(r.status, depthavg::RunStatus::Interrupted);
   EXPECT_EQ(r.series.nt(), 4u);  // t = 0 and three samples
   EXPECT_NEAR(r.t_reached, 0.03, 1e-12);
+}
+
+TEST(DepthAvgSolver, StopFlagIsSeenBetweenSamples) {
+  // One sample interval of the whole run: before, the flag was looked at only after a sample, so a
+  // run that needed many steps per sample ignored Ctrl-C for as long as the interval took (five
+  // minutes for a stalled one). Now CVODE returns every steps_per_call steps and the flag is seen.
+  const Fixture f;
+  depthavg::SpaceParams space;
+  space.nx = 64;
+  const depthavg::Solver solver(f.base, f.curve, space, {});
+  const auto U0 = depthavg::initial_state(solver.rhs(), {});
+  std::atomic<bool> stop{true};  // raised before the run: it ends after the first chunk
+  depthavg::RunCallbacks cb;
+  cb.stop = &stop;
+  depthavg::OutputParams out;
+  out.t_end = 10.0;
+  out.dt_out = 10.0;
+  const auto r = solver.run(U0, out, cb);
+  EXPECT_EQ(r.status, depthavg::RunStatus::Interrupted) << r.message;
+  EXPECT_EQ(r.stats.steps, depthavg::IntegratorParams{}.steps_per_call);
+  EXPECT_GT(r.t_reached, 0.0);
+  EXPECT_LT(r.t_reached, 10.0);
+  EXPECT_EQ(r.series.nt(), 1u);  // t = 0 only: the state between samples is not a sample
+  EXPECT_NE(r.message.find("the last sample at t = 0"), std::string::npos) << r.message;
+}
+
+TEST(DepthAvgSolver, StepsTakenInChunksAreTheStepsOfOneCall) {
+  // CVODE resumes where a chunk returned: one sample interval of thousands of steps, taken in
+  // chunks of 2 000 (the default) or of 500, or in one call, ends in the same state, bit for bit.
+  const Fixture f;
+  depthavg::SpaceParams space;
+  space.nx = 128;
+  depthavg::OutputParams out;
+  out.t_end = 1.0;
+  out.dt_out = 1.0;
+  std::vector<depthavg::RunResult> runs;
+  for (long steps_per_call : {2000L, 500L, 100000000L}) {
+    depthavg::IntegratorParams integ;
+    integ.steps_per_call = steps_per_call;
+    const depthavg::Solver solver(f.base, f.curve, space, integ);
+    runs.push_back(solver.run(depthavg::initial_state(solver.rhs(), {}), out));
+    ASSERT_EQ(runs.back().status, depthavg::RunStatus::Completed) << runs.back().message;
+  }
+  ASSERT_GT(runs[0].stats.steps, 2 * 2000);  // several chunks
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    EXPECT_EQ(runs[i].stats.steps, runs[0].stats.steps);
+    EXPECT_EQ(runs[i].final_state, runs[0].final_state);
+  }
+}
+
+TEST(DepthAvgSolver, AStalledIntegrationIsReportedInsteadOfGroundThrough) {
+  // At 40 degrees the unlimited reconstruction lets the rollwave's fronts oscillate until the
+  // depth nearly vanishes in a trough, and CVODE's steps fall to a millionth of a cell's crossing
+  // time. It used to grind through two million steps (five minutes at 256 cells) before giving
+  // up; now a thousand steps per crossing time (at least 10 000) in one interval end the run,
+  // diverged, with the step sizes in the message. The limited reconstruction runs the same case.
+  const Material material;
+  const MuCurve curve{CurveKind::Regularised, material, 4e-3};
+  const SteadyState base = steady_state(curve, degrees_to_radians(40.0), 4e-3);
+  depthavg::SpaceParams space;
+  space.nx = 32;
+  depthavg::OutputParams out;
+  out.t_end = 0.1;
+  out.dt_out = 0.005;
+  const depthavg::Solver central(base, curve, space, {});
+  const auto r = central.run(depthavg::initial_state(central.rhs(), {}), out);
+  EXPECT_EQ(r.status, depthavg::RunStatus::Diverged);
+  EXPECT_NE(r.message.find("the integration stalled"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("a wave takes to cross a cell"), std::string::npos) << r.message;
+  EXPECT_LT(r.stats.steps, 100000) << r.message;  // CVODE's own limit: two million an interval
+  space.reconstruction = depthavg::Reconstruction::VanAlbada;
+  const depthavg::Solver limited(base, curve, space, {});
+  const auto l = limited.run(depthavg::initial_state(limited.rhs(), {}), out);
+  EXPECT_EQ(l.status, depthavg::RunStatus::Completed) << l.message;
 }
 
 TEST(DepthAvgSolver, DivergenceIsReportedWithTimePlaceAndQuantity) {

@@ -129,9 +129,10 @@ RunResult Solver::run(const std::vector<double>& U0, const OutputParams& out,
         std::ostringstream s;
         s << "diverged at t = " << adv.t << " s: ";
         if (adv.stalled)
-          s << std::setprecision(3) << "the integration stalled (" << adv.steps
-            << " CVODE steps since t = " << res.series.t.back() << " s, the last of "
-            << adv.last_step << " s, " << adv.last_step / crossing << " of the " << crossing
+          s << "the integration stalled (" << adv.steps
+            << " CVODE steps since the sample at t = " << res.series.t.back() << " s, the last of "
+            << std::setprecision(3) << adv.last_step << " s, " << adv.last_step / crossing
+            << " of the " << crossing
             << " s a wave takes to cross a cell: a front or a dry bed the grid no longer "
                "resolves)"
             << std::setprecision(6);

@@ -130,9 +130,19 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
            std::fabs(m.k * seeded.phase_speed) * T >= 2 * std::numbers::pi * opt.min_periods;
   };
 
+  // Rule 7: the seeded component moves at the expected speed and is not the fit's noise.
+  auto holds_seeded_wave = [&](const Window& w) {
+    const double expected = opt.seeded_phase_speed;
+    if (!std::isfinite(expected)) return true;
+    const WaveMode& seeded = w.modes[w.seeded];
+    return std::fabs(seeded.phase_speed - expected) <=
+               opt.max_speed_mismatch * std::fabs(expected) &&
+           seeded.amplitude >= opt.min_seeded_share * w.modes[0].amplitude;
+  };
+
   double best_residual = INFINITY;
   std::size_t best_i = i0, best_j = i0 + n_min - 1;
-  std::string short_window;
+  std::string short_window, other_waves;
   std::optional<Window> chosen;  // the longest clean window so far (rule 4)
   std::string stall;             // why the search stopped at a stall (rule 6), if it did
   for (std::size_t i = i0; i + n_min <= end; i += start_stride) {
@@ -151,7 +161,19 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
       if (f.relative_residual <= opt.max_residual) {
         Window c{i, j, to_modes(f), 0, std::move(f)};
         c.seeded = seeded_index(c.modes, opt.seeded_phase_speed);
-        if (long_enough(c))
+        if (!holds_seeded_wave(c)) {
+          if (w) break;  // the extension lost the seeded wave: the window so far stands
+          if (other_waves.empty())
+            other_waves = "; clean windows such as [" + format(s.t[i]) + ", " + format(s.t[j]) +
+                          "] s hold no wave within " + format(100 * opt.max_speed_mismatch) +
+                          " % of the seeded speed " + format(opt.seeded_phase_speed) +
+                          " m/s with " + format(100 * opt.min_seeded_share) +
+                          " % of the largest amplitude (nearest " +
+                          format(c.modes[c.seeded].phase_speed) + " m/s at " +
+                          format(c.modes[c.seeded].amplitude / c.modes[0].amplitude) +
+                          " of it; the largest " + format(c.modes[0].phase_speed) + " m/s at " +
+                          format(c.modes[0].growth_rate) + " 1/s)";
+        } else if (long_enough(c))
           w = std::move(c);
         else if (!w && short_window.empty())
           short_window = "; clean windows such as [" + format(s.t[i]) + ", " + format(s.t[j]) +
@@ -199,12 +221,17 @@ SurfaceMeasurement measure_surface_series(const SurfaceSeries& s, const MeasureO
     m.reason = stall;
     return m;
   }
+  if (!other_waves.empty() && best_residual <= opt.max_residual) {
+    m.reason = "the seeded wave is not resolved: after t = " + format(s.t[i0]) + " s" +
+               other_waves.substr(1);
+    return m;
+  }
   m.reason = "no clean window: after t = " + format(s.t[i0]) +
              " s, no window of >= " + std::to_string(n_min) +
              " samples is fitted by <= " + std::to_string(opt.pencil.max_components) +
              " resolved exponentials to a relative residual of " + format(opt.max_residual) +
              " (best: " + format(best_residual) + " over [" + format(s.t[best_i]) + ", " +
-             format(s.t[best_j]) + "] s)" + short_window;
+             format(s.t[best_j]) + "] s)" + short_window + other_waves;
   return m;
 }
 

@@ -33,6 +33,11 @@
 //     (1.2177 1/s over 0.2-0.99 s at 5e-4, 1.2134 over 0.2-1.17 s at 1e-3; (7.11): 1.2249).
 //  5. Length: the window has at least min_samples samples and spans at least min_efolds e-folds
 //     (default 1) or min_periods periods (default 1) of the seeded component.
+//  6. Stall: a window that starts later than the transient's end, after |h_k| grew by at least
+//     half an e-fold since then, and whose seeded growth rate is below half that earlier mean
+//     rate, is a stall (the plateau of a wave that stopped growing, which a travelling wave of
+//     constant amplitude fits perfectly). The search stops there; the longest window found before
+//     it is reported, and without one there is no measurement.
 //  7. Identity: with an expected speed given, the seeded component (the nearest in speed) moves
 //     within max_speed_mismatch (default 5 %) of it and carries at least min_seeded_share (1 %)
 //     of the largest component's amplitude: below that, with the fit's residual up to 5e-4, a
@@ -40,13 +45,8 @@
 //     and is not taken (40 degrees on the coarse preset, a flow that the theory's slow branch had
 //     taken over: a 3-wave fit over 8 ms named a wave at 18.3 m/s, -188 1/s, "the seeded one",
 //     26 % off its 14.5 m/s; another over 5 ms one at 14.75 m/s and 657 1/s with 1/2761 of the
-//     largest amplitude). The suite's and docs/' measurements lie within 0.2 % of their theory's
-//     speed, the seeded wave the largest.
-//  6. Stall: a window that starts later than the transient's end, after |h_k| grew by at least
-//     half an e-fold since then, and whose seeded growth rate is below half that earlier mean
-//     rate, is a stall (the plateau of a wave that stopped growing, which a travelling wave of
-//     constant amplitude fits perfectly). The search stops there; the longest window found before
-//     it is reported, and without one there is no measurement.
+//     largest amplitude). The suite's measurements pass unchanged; the validation record's have
+//     their seeded wave within 0.2 % of the theory's speed.
 // When no window passes, the result has NaN numbers and a `reason`, never a made-up value.
 #pragma once
 

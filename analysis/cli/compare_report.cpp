@@ -162,7 +162,7 @@ void throw_unless_both_completed(const Comparison& c, const InterruptGuard& guar
     if (r->outcome == RunOutcome::Interrupted)
       throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
     if (r->outcome == RunOutcome::Diverged || r->outcome == RunOutcome::Failed)
-      throw CommandFailed(r->model + " " + run_status_name(r->outcome) + ": " + r->message +
+      throw CommandFailed(r->model + " run " + r->message +  // ("diverged at t = ...")
                               "; data up to then in " + h5,
                           kExitRunFailed);
   }

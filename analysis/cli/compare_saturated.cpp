@@ -203,7 +203,7 @@ void run_compare_saturated(ChuteCase chute, DepthAvgSettings depthavg, const Two
     if (r->outcome == RunOutcome::Interrupted)
       throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
     if (r->outcome != RunOutcome::Completed)
-      throw CommandFailed(r->model + " " + run_status_name(r->outcome) + ": " + r->message +
+      throw CommandFailed(r->model + " run " + r->message +  // ("diverged at t = ...")
                               "; data up to then in " + h5,
                           kExitRunFailed);
   }

@@ -191,7 +191,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
     print_table(c);
     std::cout << "  wrote " << h5 << " and " << png << "\n";
   }
-  throw_unless_both_completed(c, guard, h5);
+  throw_unless_both_completed(c.depthavg, c.twod, guard, h5);
   if (c.twod_extrapolation && c.twod_extrapolation->outcome == RunOutcome::Interrupted)
     throw CommandFailed(
         "interrupted on half the cells across the layer; both models' runs are in " + h5,

@@ -156,9 +156,9 @@ nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
        {"plot", png}});
 }
 
-void throw_unless_both_completed(const Comparison& c, const InterruptGuard& guard,
-                                 const std::string& h5) {
-  for (const ModelRun* r : {&c.depthavg, &c.twod}) {
+void throw_unless_both_completed(const ModelRun& depthavg, const ModelRun& twod,
+                                 const InterruptGuard& guard, const std::string& h5) {
+  for (const ModelRun* r : {&depthavg, &twod}) {
     if (r->outcome == RunOutcome::Interrupted)
       throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
     if (r->outcome == RunOutcome::Diverged || r->outcome == RunOutcome::Failed)

@@ -18,9 +18,10 @@ void print_table(const Comparison& c);
 nlohmann::json compare_json(const Comparison& c, int viscosity_passes,
                             const std::vector<std::string>& warnings, const std::string& h5,
                             const std::string& png);
-// The exit of compare (failure_policy.hpp): nothing when both runs completed, else CommandFailed
-// naming the model, its status and where the data up to then were written.
-void throw_unless_both_completed(const Comparison& c, const InterruptGuard& guard,
-                                 const std::string& h5);
+// The exit of compare and compare --saturated (failure_policy.hpp): nothing when both runs
+// completed, else CommandFailed naming the model, its status and where the data up to then were
+// written.
+void throw_unless_both_completed(const ModelRun& depthavg, const ModelRun& twod,
+                                 const InterruptGuard& guard, const std::string& h5);
 
 }  // namespace granbench::cli

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "analysis/cli/commands.hpp"
+#include "analysis/cli/compare_report.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/physics_warnings.hpp"
 #include "analysis/comparison/compare.hpp"
@@ -199,14 +200,7 @@ void run_compare_saturated(ChuteCase chute, DepthAvgSettings depthavg, const Two
     print_saturated_table(result, theory, d, t, ratio);
     std::cout << "  wrote " << h5 << " and " << png << "\n";
   }
-  for (const ModelRun* r : {&result.depthavg, &result.twod}) {
-    if (r->outcome == RunOutcome::Interrupted)
-      throw CommandFailed("interrupted; what was computed is in " + h5, guard.exit_code());
-    if (r->outcome != RunOutcome::Completed)
-      throw CommandFailed(r->model + " run " + r->message +  // ("diverged at t = ...")
-                              "; data up to then in " + h5,
-                          kExitRunFailed);
-  }
+  throw_unless_both_completed(result.depthavg, result.twod, guard, h5);
 }
 
 }  // namespace granbench::cli

@@ -146,7 +146,7 @@ void run_compare_saturated(ChuteCase chute, DepthAvgSettings depthavg, const Two
   if (s.window >= chute.t_end)
     throw UsageError("--window: must be below t_end = " + std::to_string(chute.t_end) +
                      " s; valid range (0, t_end)");
-  depthavg.limiter = true;
+  depthavg.reconstruction = depthavg::Reconstruction::MC;
   const Theories theory = linear_theories(chute);
 
   const std::string h5 = output.out.empty() ? "compare_saturated.h5" : output.out;

@@ -93,6 +93,8 @@ void write_compare_configuration(H5Writer& out, const ChuteCase& k, const Steady
     out.attribute("/", name, v);
   for (const auto& [name, value] : named_values(twod)) out.attribute("/", "twod_" + name, value);
   out.attribute("/", "seed", std::string(k.seed == Seed::Eigenmode ? "eigenmode" : "sine"));
+  out.attribute("/", "depthavg_limiter",
+                std::string(depthavg::reconstruction_name(depthavg.reconstruction)));
 }
 
 }  // namespace granbench

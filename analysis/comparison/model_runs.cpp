@@ -21,6 +21,7 @@
 #include "analysis/comparison/run_command.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
 #include "analysis/linear2d/linear_stability_2d.hpp"
+#include "analysis/spectral/surface_measurement.hpp"
 #include "analysis/theory/dispersion.hpp"
 #include "depthavg/initial_state.hpp"
 #include "depthavg/solver.hpp"
@@ -62,6 +63,16 @@ std::string twod_command_of(const ChuteCase& c, const TwodSettings& s) {
   return twod_run_command(c, s, twod_sampling_interval(c, c.steady()));
 }
 
+DepthAvgSettings DepthAvgSettings::limited_where_it_saturates(const ChuteCase& c,
+                                                              double growth_rate) const {
+  DepthAvgSettings r = *this;
+  const double bound = MeasureOptions{}.linear_bound * c.h0;  // where the measurement stops
+  if (reconstruction == depthavg::Reconstruction::Central &&
+      c.a0 * std::exp(growth_rate * c.t_end) > bound)
+    r.reconstruction = depthavg::Reconstruction::VanAlbada;
+  return r;
+}
+
 ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunControl& ctl) {
   const MuCurve curve = c.make_curve();
   const SteadyState base = steady_state(curve, degrees_to_radians(c.angle_deg), c.h0);
@@ -71,8 +82,7 @@ ModelRun run_depthavg(const ChuteCase& c, const DepthAvgSettings& s, const RunCo
   space.Lx = c.Lx;
   space.nx = s.nx;
   space.chi = s.chi;
-  space.reconstruction =
-      s.limiter ? depthavg::Reconstruction::MC : depthavg::Reconstruction::Central;
+  space.reconstruction = s.reconstruction;
   space.frame_speed = s.co_moving ? exact.phase_speed : 0.0;
   depthavg::IntegratorParams integ;
   integ.rtol = s.rtol;

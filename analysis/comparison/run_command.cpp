@@ -55,8 +55,8 @@ std::string depthavg_run_command(const ChuteCase& c, const DepthAvgSettings& s, 
   // The tolerances as run_depthavg (model_runs.cpp) sets them: atol relative to h0.
   return "granbench run --model depthavg" + chute_options(c, dt_out) + " --nx " +
          std::to_string(s.nx) + " --chi " + exact(s.chi) + " --limiter " +
-         (s.limiter ? "mc" : "central") + " --rtol " + exact(s.rtol) + " --atol " +
-         exact(1e-4 * s.rtol * c.h0) + " --bdf-order " +
+         std::string(depthavg::reconstruction_name(s.reconstruction)) + " --rtol " + exact(s.rtol) +
+         " --atol " + exact(1e-4 * s.rtol * c.h0) + " --bdf-order " +
          std::to_string(depthavg::IntegratorParams{}.max_order) + " --frame-speed " +
          (s.co_moving ? "linear" : "0");
 }

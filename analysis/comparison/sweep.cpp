@@ -9,6 +9,7 @@
 
 #include "analysis/comparison/twod_extrapolation.hpp"
 #include "analysis/spectral/growth_estimator_712.hpp"
+#include "analysis/theory/dispersion.hpp"
 
 namespace granbench {
 
@@ -75,19 +76,22 @@ std::string seeded_run_command(const SweepSpec& spec, const SweepPoint& p) {
   c.Lx = p.Lx;
   if (p.model == "twod")
     return twod_command_of(c, point_twod_settings(spec, p.Lx, p.growth_rate_exact));
-  return spec.depthavg_linear ? std::string() : depthavg_command_of(c, spec.depthavg_settings);
+  return spec.depthavg_linear ? std::string()
+                              : depthavg_command_of(c, point_depthavg_settings(spec, p.Lx));
 }
 
 // A point from a seeded run of either model, measured like compare's (compare.hpp).
 void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
                     const RunControl& ctl) {
   const TwodSettings twod = point_twod_settings(spec, c.Lx, p.theory.exact_2d.growth_rate);
-  const ModelRun r =
-      p.model == "twod" ? run_twod(c, twod, ctl) : run_depthavg(c, spec.depthavg_settings, ctl);
+  // the depth-averaged run's own theory: (7.11) with its chi
+  const TheoryValue& depthavg_theory =
+      spec.depthavg_settings.chi != 1.0 ? p.theory.exact_bagnold : p.theory.exact;
+  const ModelRun r = p.model == "twod" ? run_twod(c, twod, ctl)
+                                       : run_depthavg(c, point_depthavg_settings(spec, c.Lx), ctl);
   MeasureOptions opt;
-  opt.seeded_phase_speed = p.model == "twod"                   ? p.theory.exact_2d.phase_speed
-                           : spec.depthavg_settings.chi != 1.0 ? p.theory.exact_bagnold.phase_speed
-                                                               : p.theory.exact.phase_speed;
+  opt.seeded_phase_speed =
+      p.model == "twod" ? p.theory.exact_2d.phase_speed : depthavg_theory.phase_speed;
   const Measurement m = measure(r.series, opt);
   p.growth_rate = m.spectral.growth_rate;
   p.phase_speed = m.spectral.phase_speed;
@@ -103,10 +107,8 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
     p.growth_rate_exact = p.theory.exact_2d.growth_rate;
     p.phase_speed_exact = p.theory.exact_2d.phase_speed;
   } else {
-    const bool bagnold = spec.depthavg_settings.chi != 1.0;
-    const TheoryValue& t = bagnold ? p.theory.exact_bagnold : p.theory.exact;
-    p.growth_rate_exact = t.growth_rate;
-    p.phase_speed_exact = t.phase_speed;
+    p.growth_rate_exact = depthavg_theory.growth_rate;
+    p.phase_speed_exact = depthavg_theory.phase_speed;
   }
   p.window_start = m.spectral.t_first;
   p.window_end = m.spectral.t_last;
@@ -202,6 +204,13 @@ TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_
   twod.nx = twod.cells_along(Lx);
   twod.threads = std::max(1, twod.threads / static_cast<int>(std::max(1u, spec.jobs)));
   return twod;
+}
+
+DepthAvgSettings point_depthavg_settings(const SweepSpec& spec, double Lx) {
+  ChuteCase c = spec.chute;
+  c.Lx = Lx;
+  const double growth = dispersion_mode(c.steady(), spec.depthavg_settings.chi, Lx).growth_rate;
+  return spec.depthavg_settings.limited_where_it_saturates(c, growth);
 }
 
 std::string sweep_part_path(const std::string& out, int rank) {

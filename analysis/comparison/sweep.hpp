@@ -89,6 +89,11 @@ struct SweepSpec {
 // threads (oversubscribed threads wait on each other). The one place a point's grid is made.
 TwodSettings point_twod_settings(const SweepSpec& spec, double Lx, double exact_growth);
 
+// The depth-averaged settings of the seeded point of length Lx: the sweep's, with van Albada's
+// limiter where the seed, grown at the rate of (7.11) with the sweep's chi, passes the linear
+// bound before the run's end (DepthAvgSettings::limited_where_it_saturates).
+DepthAvgSettings point_depthavg_settings(const SweepSpec& spec, double Lx);
+
 // Ls from "A:B:N" (N points evenly spaced from A to B inclusive, 0 < A <= B, 1 <= N <= 10000);
 // throws std::invalid_argument.
 std::vector<double> parse_range(const std::string& text);

@@ -26,14 +26,15 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
                        {"linear_reconstruction", static_cast<double>(l.reconstruction)},
                        {"linear_co_moving", l.co_moving ? 1.0 : 0.0}});
   } else {
-    v.insert(v.end(), {{"a0", c.a0},
-                       {"seed", static_cast<double>(c.seed)},
-                       {"t_end", c.t_end},
-                       {"dt_out", c.dt_out},
-                       {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
-                       {"depthavg_limiter", s.depthavg_settings.limiter ? 1.0 : 0.0},
-                       {"depthavg_rtol", s.depthavg_settings.rtol},
-                       {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0}});
+    v.insert(v.end(),
+             {{"a0", c.a0},
+              {"seed", static_cast<double>(c.seed)},
+              {"t_end", c.t_end},
+              {"dt_out", c.dt_out},
+              {"depthavg_nx", static_cast<double>(s.depthavg_settings.nx)},
+              {"depthavg_limiter", static_cast<double>(s.depthavg_settings.reconstruction)},
+              {"depthavg_rtol", s.depthavg_settings.rtol},
+              {"depthavg_co_moving", s.depthavg_settings.co_moving ? 1.0 : 0.0}});
     if (s.window_712)
       v.insert(v.end(), {{"window_712_start", s.window_712->first},
                          {"window_712_end", s.window_712->second}});
@@ -41,6 +42,10 @@ std::vector<std::pair<std::string, double>> stored_settings(const SweepSpec& s) 
       v.emplace_back("twod_" + name, value);
     // (stored only when set: a sweep without it resumes the files written before it existed)
     if (s.twod_extrapolate) v.emplace_back("twod_extrapolate", 1.0);
+    // Seeded depth-averaged points limit their slopes where their wave saturates
+    // (point_depthavg_settings); a file written before that rule may hold such points with
+    // central slopes, so it lacks this and is not resumed.
+    if (s.depthavg) v.emplace_back("depthavg_limited_where_saturating", 1.0);
   }
   return v;
 }

@@ -55,3 +55,35 @@ TEST(RunCommand, EachModelsRunCommandReproducesItsGrowthRateAndPhaseSpeed) {
   }
   std::filesystem::remove_all(dir);
 }
+
+// On a steep slope the seeded wave saturates within the run, so compare limits the
+// depth-averaged slopes (DepthAvgSettings::limited_where_it_saturates): it says so, the command
+// completes (with central slopes that run stalls at 1.05 s), and the run command it records names
+// the limiter and reproduces the measurement.
+TEST(RunCommand, ASaturatingDepthAveragedRunNamesItsLimiterAndIsReproduced) {
+  const auto dir = std::filesystem::temp_directory_path() / "granbench_run_command_steep";
+  std::filesystem::create_directories(dir);
+  const auto c = run_granbench(
+      "compare --angle 40 --Lx 0.08 --nx 32 --nz 16 --nx-depthavg 128 "
+      "--t-end 1.5 --json --quiet --out " +
+          (dir / "c.h5").string() + " --plot " + (dir / "c.png").string(),
+      "run_command_steep");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const auto jc = nlohmann::json::parse(c.out);
+  const auto& m = jc["depthavg"];
+  EXPECT_EQ(m["limiter"], "vanalbada");
+  EXPECT_TRUE(m["completed"].get<bool>());
+  bool noted = false;
+  for (const auto& w : jc["warnings"])
+    noted = noted || w.get<std::string>().find("limits its slopes") != std::string::npos;
+  EXPECT_TRUE(noted) << jc["warnings"];
+  const std::string cmd = m["run_command"].get<std::string>();
+  ASSERT_NE(cmd.find("--limiter vanalbada"), std::string::npos) << cmd;
+  const auto r = run_granbench(cmd.substr(std::string("granbench ").size()) + " --json --quiet",
+                               "run_command_steep_depthavg");
+  ASSERT_EQ(r.code, 0) << cmd << "\n" << r.err;
+  const auto jr = nlohmann::json::parse(r.out);
+  expect_same_to_1e9(m, jr, "growth_rate", "depthavg");
+  expect_same_to_1e9(m, jr, "phase_speed", "depthavg");
+  std::filesystem::remove_all(dir);
+}

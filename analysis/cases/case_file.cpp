@@ -1,22 +1,18 @@
-// Reading the paper's case files (case_file.hpp) with CLI11's TOML reader, the one the --config
-// option uses, so case files and config files follow the same syntax.
+// Reading the paper's case files (case_file.hpp) with the strict TOML reader that --config uses
+// (common/toml_reader.hpp), so case files and config files follow the same syntax, and text that
+// is not TOML is an error naming the file and the line rather than keys read wrongly.
 #include "analysis/cases/case_file.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "common/toml_reader.hpp"
+
 namespace granbench::cases {
 
 namespace {
-
-std::string unquote(std::string s) {
-  if (s.size() >= 2 && (s.front() == '"' || s.front() == '\'') && s.back() == s.front())
-    s = s.substr(1, s.size() - 2);
-  return s;
-}
 
 double parse_number(const std::string& text, const std::string& where) {
   std::size_t used = 0;
@@ -61,14 +57,12 @@ const std::vector<std::string>& CaseFile::raw(const std::string& key,
 std::string CaseFile::text(const std::string& key, const std::string& resolution) const {
   const auto& v = raw(key, resolution);
   if (v.size() != 1) throw CaseFileError(path_ + ": key '" + key + "' must be one value");
-  return unquote(v.front());
+  return v.front();
 }
 
 std::vector<std::string> CaseFile::texts(const std::string& key,
                                          const std::string& resolution) const {
-  std::vector<std::string> out;
-  for (const auto& s : raw(key, resolution)) out.push_back(unquote(s));
-  return out;
+  return raw(key, resolution);
 }
 
 double CaseFile::number(const std::string& key, const std::string& resolution) const {
@@ -106,9 +100,7 @@ std::map<std::string, std::vector<std::string>> CaseFile::table(
   for (const std::string& prefix : {name + ".", resolution + "." + name + "."}) {
     for (const auto& [key, values] : values_) {
       if (key.rfind(prefix, 0) != 0 || key.find('.', prefix.size()) != std::string::npos) continue;
-      std::vector<std::string> plain;
-      for (const auto& v : values) plain.push_back(unquote(v));
-      out[key.substr(prefix.size())] = plain;
+      out[key.substr(prefix.size())] = values;
     }
   }
   return out;
@@ -116,19 +108,20 @@ std::map<std::string, std::vector<std::string>> CaseFile::table(
 
 CaseFile read_case_file(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw CaseFileError("cannot read case file '" + path + "'");
-  std::vector<CLI::ConfigItem> items;
+  if (!in) throw CaseFileError(path + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  TomlDocument doc;
   try {
-    items = CLI::ConfigTOML().from_config(in);
-  } catch (const CLI::ParseError& e) {
-    throw CaseFileError(path + ": not valid TOML: " + e.what());
+    doc = read_toml(text.str(), path);
+  } catch (const TomlError& e) {
+    throw CaseFileError(e.what());  // "FILE:LINE: what"
   }
   std::map<std::string, std::vector<std::string>> values;
-  for (const auto& item : items) {
-    if (item.name.empty() || item.name == "++" || item.name == "--") continue;
+  for (const TomlEntry& e : doc.entries) {
     std::string key;
-    for (const auto& p : item.parents) key += p + ".";
-    values[key + item.name] = item.inputs;
+    for (const auto& t : e.table) key += t + ".";
+    values[key + e.key] = e.values;
   }
   return CaseFile(path, std::move(values));
 }
@@ -139,7 +132,7 @@ std::vector<CaseFile> list_case_files(const std::string& directory) {
   for (const auto& entry : std::filesystem::directory_iterator(directory, ec))
     if (entry.path().extension() == ".toml") paths.push_back(entry.path().string());
   if (ec)
-    throw CaseFileError("cannot list the case directory '" + directory + "': " + ec.message());
+    throw CaseFileError("in " + directory + ": the directory cannot be listed: " + ec.message());
   std::sort(paths.begin(), paths.end());
   std::vector<CaseFile> out;
   for (const auto& p : paths) out.push_back(read_case_file(p));

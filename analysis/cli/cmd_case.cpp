@@ -34,7 +34,12 @@ namespace granbench::cli {
 
 namespace {
 
-void run_case(const CaseOptions& o) {
+void run_case_file(const CaseOptions& o) {
+  // (the default is the source tree's cases/, compiled in: gone if the tree was moved)
+  if (std::error_code ec; !std::filesystem::is_directory(o.cases_dir, ec))
+    throw UsageError("--cases-dir: '" + o.cases_dir +
+                     "' is not a directory; valid values: a directory of case files "
+                     "(<name>.toml), such as the repository's cases/");
   if (o.list) {
     for (const auto& f : cases::list_case_files(o.cases_dir))
       std::cout << f.name() << "  [" << f.text("kind") << "]  "
@@ -55,25 +60,20 @@ void run_case(const CaseOptions& o) {
 
   int exit_code = 0;
   nlohmann::json j;
-  std::string kind;
-  try {
-    const cases::CaseFile file = cases::read_case_file(path);
-    kind = file.text("kind");
-    if (kind == "decelerating" || kind == "high-speed")
-      j = run_layer_kind(file, o, exit_code);
-    else if (kind == "rollwave")
-      j = run_rollwave_kind(file, o, exit_code);
-    else if (kind == "wellposed")
-      j = run_wellposed_kind(file, o);
-    else if (kind == "figure13")
-      j = run_figure13_kind(file, o, exit_code);
-    else
-      throw cases::CaseFileError(
-          path + ": key 'kind' = '" + kind +
-          "'; valid values {decelerating,high-speed,rollwave,wellposed,figure13}");
-  } catch (const cases::CaseFileError& e) {
-    throw UsageError(std::string("case file ") + e.what());
-  }
+  const cases::CaseFile file = cases::read_case_file(path);
+  const std::string kind = file.text("kind");
+  if (kind == "decelerating" || kind == "high-speed")
+    j = run_layer_kind(file, o, exit_code);
+  else if (kind == "rollwave")
+    j = run_rollwave_kind(file, o, exit_code);
+  else if (kind == "wellposed")
+    j = run_wellposed_kind(file, o);
+  else if (kind == "figure13")
+    j = run_figure13_kind(file, o, exit_code);
+  else
+    throw cases::CaseFileError(
+        path + ": key 'kind' = '" + kind +
+        "'; valid values {decelerating,high-speed,rollwave,wellposed,figure13}");
   j["kind"] = kind;
   if (o.output.json)
     print_json(j);
@@ -84,6 +84,16 @@ void run_case(const CaseOptions& o) {
   if (exit_code != 0)
     throw CommandFailed("the case's run failed (exit code " + std::to_string(exit_code) + ")",
                         exit_code);
+}
+
+// A case file that cannot be read, is not TOML or lacks a key is bad input (exit 2), whether
+// listed, named or run.
+void run_case(const CaseOptions& o) {
+  try {
+    run_case_file(o);
+  } catch (const cases::CaseFileError& e) {
+    throw UsageError(std::string("case file ") + e.what());
+  }
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "analysis/cli/cli_common.hpp"
-#include "analysis/cli/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 namespace granbench::cli {
 

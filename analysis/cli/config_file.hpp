@@ -1,11 +1,11 @@
 // --config FILE.toml for every subcommand (docs/design.md: any option can come from the file and
 // the command line overrides it). CLI11 2.1 reads config files only at the top level, so the file
-// is read here (toml_reader.hpp, strict TOML) and expanded into ordinary options before parsing:
-// `name = value` at the top applies to every subcommand that has --name; under a [<subcommand>]
-// section it applies to that subcommand and overrides the top; a later file overrides an earlier
-// one; the command line overrides them all. A key that is no option of its subcommand (of any
-// subcommand, at the top), a section that is no subcommand and malformed TOML are refused with
-// the file, the line and the key.
+// is read here (common/toml_reader.hpp, strict TOML) and expanded into ordinary options before
+// parsing: `name = value` at the top applies to every subcommand that has --name; under a
+// [<subcommand>] section it applies to that subcommand and overrides the top; a later file
+// overrides an earlier one; the command line overrides them all. A key that is no option of its
+// subcommand (of any subcommand, at the top), a section that is no subcommand and malformed TOML
+// are refused with the file, the line and the key.
 //
 // --print-config writes the effective options of the subcommand as TOML (a [<subcommand>]
 // table that --config reads back; defaults as comments) instead of running it.

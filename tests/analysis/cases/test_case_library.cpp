@@ -132,6 +132,25 @@ TEST(CaseFile, ErrorsNameTheKeyAndTheRange) {
   EXPECT_THROW(read_case_file("/nonexistent/case.toml"), CaseFileError);
 }
 
+// Case files are read as strictly as --config files (common/toml_reader.hpp): text that is not
+// TOML is an error naming the file and the line, not a table silently read as something else
+// (CLI11's reader, used before, took "[run" and "t_end = 1 2" without a word).
+TEST(CaseFile, TextThatIsNotTomlIsRefusedWithTheLine) {
+  for (const auto& [text, line] : std::vector<std::pair<std::string, std::string>>{
+           {"kind = \"rollwave\"\n[run\nnx = 32\n", ":2:"},
+           {"kind = \"rollwave\"\nt_end = 1 2\n", ":2:"},
+           {"kind = rollwave\n", ":1:"},
+           {"kind = \"a\"\nkind = \"b\"\n", ":2:"}}) {
+    const std::string path = write_file("gb_case_bad.toml", text);
+    try {
+      (void)read_case_file(path);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const CaseFileError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + line), std::string::npos) << e.what();
+    }
+  }
+}
+
 LayerRunRecord profile_record(int nz, double Lz, std::vector<double> I) {
   LayerRunRecord r;
   r.nz = nz, r.Lz = Lz, r.nx = 1, r.Lx = 1.0;

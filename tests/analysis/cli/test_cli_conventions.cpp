@@ -1,7 +1,7 @@
 // Conventions of the command line (qa.md, "Misleading" and "Conventions"): an unknown command is
 // named with a suggestion; --help shows examples and the exit codes; mu_s >= mu_d is refused;
 // --mu-inf has a validator and its errors name it; options that do not apply to the sweep's
-// model are refused, not ignored.
+// model are refused, not ignored; a case directory that is not there is refused.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -124,6 +124,14 @@ TEST(CliConventions, ImpossibleGridsCasesAndFileNamesAreRefusedUpFront) {
   expect_refused("run --model depthavg --extrapolate" + run_quick,
                  "--extrapolate: applies to --model twod only");
   EXPECT_FALSE(std::filesystem::exists(dir + "gb_conv_r.h5"));
+  // a case directory that is not there (the default is compiled in: a moved source tree) is bad
+  // input, not an internal error
+  expect_refused("case --list --cases-dir " + dir + "gb_conv_no_cases",
+                 "--cases-dir:", {"not a directory"});
+  expect_refused(
+      "case rollwave-8cm --out-dir " + dir + "gb_conv_case --cases-dir " + dir + "gb_conv_no_cases",
+      "--cases-dir:");
+  EXPECT_FALSE(std::filesystem::exists(dir + "gb_conv_case"));
 }
 
 // run: an option of the other model is refused, not silently ignored (qa.md: sweep --model twod

@@ -1,5 +1,5 @@
 // The strict TOML subset reader; see toml_reader.hpp.
-#include "analysis/cli/toml_reader.hpp"
+#include "common/toml_reader.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,7 +7,7 @@
 #include <set>
 #include <sstream>
 
-namespace granbench::cli {
+namespace granbench {
 
 namespace {
 
@@ -315,4 +315,4 @@ TomlDocument read_toml(const std::string& text, const std::string& name) {
   return Parser(text, name).parse();
 }
 
-}  // namespace granbench::cli
+}  // namespace granbench

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace granbench::cli {
+namespace granbench {
 
 struct TomlEntry {
   std::vector<std::string> table;  // the enclosing tables, outermost first; empty at the top
@@ -41,4 +41,4 @@ struct TomlDocument {
 // Throws TomlError "FILE:LINE: what" (`name` is the file name used in messages).
 TomlDocument read_toml(const std::string& text, const std::string& name);
 
-}  // namespace granbench::cli
+}  // namespace granbench

@@ -58,6 +58,20 @@ bool any_extrapolated(const std::vector<SweepPoint>& points) {
                      [](const SweepPoint& p) { return !std::isnan(p.growth_rate_extrapolated); });
 }
 
+// Why a point has no growth rate: empty (JSON null) where it has one; the measurement's reason
+// where the point was measured in this process; otherwise a note that the reason was not kept.
+std::string growth_reason(const SweepPoint& p) {
+  if (!std::isnan(p.growth_rate)) return "";
+  if (!p.growth_reason.empty()) return p.growth_reason;
+  return "the reason is not kept with a point read back from a file or another process (its "
+         "run_command runs it again)";
+}
+
+nlohmann::json growth_reason_json(const SweepPoint& p) {
+  const std::string why = growth_reason(p);
+  return why.empty() ? nlohmann::json(nullptr) : nlohmann::json(why);
+}
+
 }  // namespace
 
 nlohmann::json point_json(const SweepPoint& p) {
@@ -66,6 +80,7 @@ nlohmann::json point_json(const SweepPoint& p) {
       {"Lx", p.Lx},
       {"k_hat", p.k_hat},
       {"growth_rate", number_or_null(p.growth_rate)},
+      {"growth_reason", growth_reason_json(p)},
       {"growth_rate_exact", p.growth_rate_exact},
       {"phase_speed", number_or_null(p.phase_speed)},
       {"phase_speed_exact", p.phase_speed_exact},
@@ -128,6 +143,10 @@ void print_table(const std::vector<SweepPoint>& points, const std::string& title
   if (extrapolated)
     std::cout << "extrap.: the 2D growth rate extrapolated from this grid and half its cells "
                  "across the layer (order 1.4 in the cell height; bounds: orders 1.7 and 1.3)\n";
+  for (const auto& p : points)
+    if (const std::string why = growth_reason(p); !why.empty())
+      std::cout << std::setprecision(4) << p.model << " at Lx = " << p.Lx
+                << " m: growth not measured: " << why << "\n";
 }
 
 nlohmann::json sweep_json(const std::vector<SweepPoint>& points, const nlohmann::json& settings,

@@ -67,6 +67,7 @@ void measure_linear(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p) {
   p.cells_x = static_cast<double>(spec.depthavg_linear->nx);
   p.completed = r.ok;
   p.message = r.message;
+  if (!r.measured.found()) p.growth_reason = r.measured.reason;
 }
 
 // The `granbench run` command of a seeded point; empty for a depth-averaged linear run (no
@@ -94,6 +95,7 @@ void measure_seeded(const SweepSpec& spec, const ChuteCase& c, SweepPoint& p,
       p.model == "twod" ? p.theory.exact_2d.phase_speed : depthavg_theory.phase_speed;
   const Measurement m = measure(r.series, opt);
   p.growth_rate = m.spectral.growth_rate;
+  if (!m.spectral.found()) p.growth_reason = m.spectral.reason;
   p.phase_speed = m.spectral.phase_speed;
   p.growth_rate_712 = m.growth_712.value_or(NAN);
   if (spec.window_712) try {

@@ -54,6 +54,9 @@ struct SweepPoint {
   bool completed = false;
   bool resumed = false;  // read back from an earlier run (not stored)
   std::string message;   // why a point did not complete (not stored)
+  // Why growth_rate is NaN (the measurement's reason: no clean window, ...), for a point measured
+  // in this process; empty otherwise (not stored, nor sent between processes)
+  std::string growth_reason;
   // `granbench run ...` that reproduces a seeded point's run (run_command.hpp), also for resumed
   // points (made again from the spec); empty for the depth-averaged linear runs (no `run`
   // equivalent)

@@ -69,6 +69,41 @@ TEST(SweepCli, ResumesFromTheOutputFileAndRunsOnlyTheNewPoints) {
   std::filesystem::remove(out);
 }
 
+// A point without a growth rate says why, in the JSON and under the table: the measurement's
+// reason where the point ran; a note that it was not kept where the point was read back.
+TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
+  const std::string out = temp_file("reason.h5");
+  std::filesystem::remove(out);
+  // 0.05 s is too short for any window: both models measure nothing
+  const std::string args =
+      "sweep --model both --Lx 0.08:0.08:1 --t-end 0.05 --resolution coarse "
+      "--jobs 2 --quiet --out " +
+      out;
+  const auto r = run_granbench(args + " --json", "sweep_reason_" + std::to_string(getpid()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["points"].size(), 2u);
+  for (const auto& p : j["points"]) {
+    EXPECT_TRUE(p["growth_rate"].is_null()) << p;
+    ASSERT_TRUE(p["growth_reason"].is_string()) << p;
+    EXPECT_NE(p["growth_reason"].get<std::string>().find("too short"), std::string::npos) << p;
+  }
+  const auto table = run_granbench(args, "sweep_reason_table_" + std::to_string(getpid()));
+  ASSERT_EQ(table.code, 0) << table.err;
+  // (read back from the file this time)
+  EXPECT_NE(table.out.find("twod at Lx = 0.08 m: growth not measured: the reason is not kept"),
+            std::string::npos)
+      << table.out;
+  const auto again =
+      run_granbench(args + " --json", "sweep_reason_kept_" + std::to_string(getpid()));
+  ASSERT_EQ(again.code, 0) << again.err;
+  for (const auto& p : nlohmann::json::parse(again.out)["points"]) {
+    EXPECT_TRUE(p["resumed"].get<bool>()) << p;
+    EXPECT_NE(p["growth_reason"].get<std::string>().find("not kept"), std::string::npos) << p;
+  }
+  std::filesystem::remove(out);
+}
+
 TEST(SweepCli, TwoMpiRanksGiveTheSingleProcessResult) {
 #ifndef GRANBENCH_MPIEXEC
   GTEST_SKIP() << "granbench was built without MPI";

@@ -63,8 +63,12 @@ bool any_extrapolated(const std::vector<SweepPoint>& points) {
 std::string growth_reason(const SweepPoint& p) {
   if (!std::isnan(p.growth_rate)) return "";
   if (!p.growth_reason.empty()) return p.growth_reason;
-  return "the reason is not kept with a point read back from a file or another process (its "
-         "run_command runs it again)";
+  return std::string(
+             "the reason is not kept with a point read back from a file or another "
+             "process (") +
+         (p.run_command.empty() ? "a sweep of this length alone, without --out, gives it"
+                                : "its run_command runs it again") +
+         ")";
 }
 
 nlohmann::json growth_reason_json(const SweepPoint& p) {

@@ -39,13 +39,20 @@ namespace {
 // limited_where_it_saturates): where the seeded wave leaves the linear regime and what it costs.
 std::string saturating_depthavg_note(const ChuteCase& c, double growth_rate) {
   const double bound = MeasureOptions{}.linear_bound;
+  char when[160];
+  if (c.a0 >= bound * c.h0)
+    std::snprintf(when, sizeof when,
+                  "starts at %.3g h0, at or above the linear bound (%.0f %% of h0)", c.a0 / c.h0,
+                  100.0 * bound);
+  else
+    std::snprintf(when, sizeof when, "passes %.0f %% of h0 at t = %.3g s, before --t-end %.3g s",
+                  100.0 * bound, std::log(bound * c.h0 / c.a0) / growth_rate, c.t_end);
   char buf[480];
   std::snprintf(buf, sizeof buf,
-                "the seeded wave, growing at the (7.11) rate %.4g 1/s, passes %.0f %% of h0 at "
-                "t = %.3g s, before --t-end %.3g s, and steepens into fronts: the depth-averaged "
-                "model limits its slopes there (--limiter vanalbada, about 0.1 %% off its "
-                "linear growth; docs/comparison.md)",
-                growth_rate, 100.0 * bound, std::log(bound * c.h0 / c.a0) / growth_rate, c.t_end);
+                "the seeded wave, growing at the (7.11) rate %.4g 1/s, %s, and steepens into "
+                "fronts: the depth-averaged model limits its slopes there (--limiter vanalbada, "
+                "about 0.1 %% off its linear growth; docs/comparison.md)",
+                growth_rate, when);
   return std::string(buf);
 }
 

@@ -87,3 +87,24 @@ TEST(RunCommand, ASaturatingDepthAveragedRunNamesItsLimiterAndIsReproduced) {
   expect_same_to_1e9(m, jr, "phase_speed", "depthavg");
   std::filesystem::remove_all(dir);
 }
+
+// A seed at or above the linear bound is said to start there (not to pass the bound at a negative
+// time), and its depth-averaged run is limited too.
+TEST(RunCommand, ASeedAboveTheLinearBoundIsSaidToStartThere) {
+  const auto dir = std::filesystem::temp_directory_path() / "granbench_run_command_large_seed";
+  std::filesystem::create_directories(dir);
+  const auto c = run_granbench(
+      "compare --Lx 0.08 --nx 32 --nz 16 --nx-depthavg 64 --t-end 0.1 "
+      "--a0 4e-4 --json --quiet --out " +
+          (dir / "c.h5").string() + " --plot " + (dir / "c.png").string(),
+      "run_command_large_seed");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const auto jc = nlohmann::json::parse(c.out);
+  EXPECT_EQ(jc["depthavg"]["limiter"], "vanalbada");
+  std::string note;
+  for (const auto& w : jc["warnings"])
+    if (w.get<std::string>().find("limits its slopes") != std::string::npos) note = w;
+  EXPECT_NE(note.find("starts at 0.1 h0"), std::string::npos) << note;
+  EXPECT_EQ(note.find("t = -"), std::string::npos) << note;
+  std::filesystem::remove_all(dir);
+}

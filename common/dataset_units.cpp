@@ -120,6 +120,7 @@ const std::map<std::string, DatasetDoc>& by_name() {
        {"1/s", "upper bound of the extrapolation (orders 1.3 and 1.7)"}},
       {"cells_x", {"1", "cells of the point's run along x"}},
       {"cells_z", {"1", "cells of the point's 2D run across the layer (NaN: depth-averaged)"}},
+      {"growth_reason", {"text", "why the point has no growth rate (empty where it has one)"}},
   };
   return t;
 }

@@ -3,6 +3,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -100,6 +101,30 @@ void H5Writer::write(const std::string& name, std::span<const std::int64_t> data
   write_dataset(file_, name, data, dims, H5T_NATIVE_INT64);
 }
 
+void H5Writer::write(const std::string& name, std::span<const std::string> text) {
+  std::size_t width = 1;  // HDF5 has no strings of length 0
+  for (const std::string& t : text) width = std::max(width, t.size());
+  std::vector<char> packed(text.size() * width, '\0');
+  for (std::size_t i = 0; i < text.size(); ++i)
+    std::copy(text[i].begin(), text[i].end(), packed.begin() + static_cast<long>(i * width));
+  hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, width);
+  H5Tset_strpad(type, H5T_STR_NULLPAD);
+  const hsize_t n = text.size();
+  hid_t space = H5Screate_simple(1, &n, nullptr);
+  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+  H5Pset_create_intermediate_group(lcpl, 1);
+  hid_t set = H5Dcreate2(file_, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  herr_t st = set < 0 ? -1
+              : n     ? H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data())
+                      : 0;
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(space);
+  H5Tclose(type);
+  check(st, "write " + name);
+}
+
 void H5Writer::attribute(const std::string& object, const std::string& key, double value) {
   hid_t space = H5Screate(H5S_SCALAR);
   if (H5Aexists_by_name(file_, object.c_str(), key.c_str(), H5P_DEFAULT) > 0)
@@ -166,16 +191,37 @@ void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& 
   for (const MaterialConstant& c : material_constants) out.attribute("/", c.key, m.*c.value);
 }
 
+namespace {
+// A dataset of a file opened for reading; both closed when it goes out of scope.
+class ReadSet {
+ public:
+  ReadSet(const std::string& path, const std::string& name) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file_ < 0) throw std::runtime_error("cannot open HDF5 file " + path);
+    set_ = H5Dopen2(file_, name.c_str(), H5P_DEFAULT);
+    if (set_ < 0) {
+      H5Fclose(file_);
+      throw std::runtime_error("no dataset " + name + " in " + path);
+    }
+  }
+  ~ReadSet() {
+    H5Dclose(set_);
+    H5Fclose(file_);
+  }
+  ReadSet(const ReadSet&) = delete;
+  ReadSet& operator=(const ReadSet&) = delete;
+  hid_t id() const { return set_; }
+
+ private:
+  hid_t file_ = -1, set_ = -1;
+};
+}  // namespace
+
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
                                     std::vector<std::size_t>* dims) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error("cannot open HDF5 file " + path);
-  hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-  if (set < 0) {
-    H5Fclose(file);
-    throw std::runtime_error("no dataset " + name + " in " + path);
-  }
+  const ReadSet read(path, name);
+  const hid_t set = read.id();
   hid_t space = H5Dget_space(set);
   const int rank = H5Sget_simple_extent_ndims(space);
   std::vector<hsize_t> hd(static_cast<std::size_t>(std::max(rank, 0)));
@@ -185,11 +231,38 @@ std::vector<double> h5_read_doubles(const std::string& path, const std::string& 
   std::vector<double> data(n);
   herr_t st = n ? H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) : 0;
   H5Sclose(space);
-  H5Dclose(set);
-  H5Fclose(file);
   check(st, "read " + name);
   if (dims) dims->assign(hd.begin(), hd.end());
   return data;
+}
+
+std::vector<std::string> h5_read_strings(const std::string& path, const std::string& name) {
+  const ReadSet read(path, name);
+  const hid_t set = read.id();
+  hid_t stored = H5Dget_type(set);
+  const bool fixed_text = H5Tget_class(stored) == H5T_STRING && H5Tis_variable_str(stored) == 0;
+  const std::size_t width = fixed_text ? H5Tget_size(stored) : 0;
+  H5Tclose(stored);
+  hid_t space = H5Dget_space(set);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<char> packed(static_cast<std::size_t>(std::max<hssize_t>(n, 0)) * width);
+  herr_t st = -1;
+  if (fixed_text) {
+    hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, width);
+    H5Tset_strpad(type, H5T_STR_NULLPAD);
+    st = n > 0 ? H5Dread(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()) : 0;
+    H5Tclose(type);
+  }
+  H5Sclose(space);
+  if (!fixed_text) throw std::runtime_error(name + " in " + path + " is not fixed-length text");
+  check(st, "read " + name);
+  std::vector<std::string> text;
+  for (std::size_t i = 0; i * width < packed.size(); ++i) {
+    const char* begin = packed.data() + i * width;
+    text.emplace_back(begin, std::find(begin, begin + width, '\0'));
+  }
+  return text;
 }
 
 bool h5_has(const std::string& path, const std::string& name) {

@@ -28,6 +28,9 @@ class H5Writer {
              const std::vector<std::size_t>& dims = {});
   void write(const std::string& name, std::span<const std::int64_t> data,
              const std::vector<std::size_t>& dims = {});
+  // A one-dimensional dataset of text, each entry padded with NULs to the longest one's length
+  // (fixed-length strings: what every HDF5 version and h5py read alike).
+  void write(const std::string& name, std::span<const std::string> text);
   // Attributes on an object ("/" for the file root).
   void attribute(const std::string& object, const std::string& key, double value);
   void attribute(const std::string& object, const std::string& key, const std::string& value);
@@ -55,6 +58,8 @@ void write_flow_inputs(H5Writer& out, const std::string& curve, const Material& 
 std::vector<double> h5_read_doubles(const std::string& path, const std::string& name,
                                     std::vector<std::size_t>* dims = nullptr);
 bool h5_has(const std::string& path, const std::string& name);
+// A dataset of fixed-length strings (H5Writer::write of text), each without its padding.
+std::vector<std::string> h5_read_strings(const std::string& path, const std::string& name);
 // Attributes of an object ("/" for the root); throw std::runtime_error when missing.
 std::string h5_read_string_attribute(const std::string& path, const std::string& object,
                                      const std::string& key);

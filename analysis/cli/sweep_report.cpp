@@ -59,13 +59,16 @@ bool any_extrapolated(const std::vector<SweepPoint>& points) {
 }
 
 // Why a point has no growth rate: empty (JSON null) where it has one; the measurement's reason
-// where the point was measured in this process; otherwise a note that the reason was not kept.
+// (kept in the sweep file and sent between processes); the run's failure where it stopped before
+// a measurement; otherwise (a point read from a file written before the reasons were stored) a
+// note that the reason was not kept.
 std::string growth_reason(const SweepPoint& p) {
   if (!std::isnan(p.growth_rate)) return "";
   if (!p.growth_reason.empty()) return p.growth_reason;
+  if (!p.message.empty()) return "the run did not complete: " + p.message;
   return std::string(
-             "the reason is not kept with a point read back from a file or another "
-             "process (") +
+             "the reason is not kept in a sweep file written before granbench stored it "
+             "(") +
          (p.run_command.empty() ? "a sweep of this length alone, without --out, gives it"
                                 : "its run_command runs it again") +
          ")";

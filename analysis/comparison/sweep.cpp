@@ -155,6 +155,8 @@ SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& 
   SweepPoint p;
   p.model = task.model;
   p.Lx = task.Lx;
+  // (not a number until measured: a run that throws before its measurement has none)
+  p.growth_rate = p.phase_speed = NAN;
   try {
     const bool linear = task.model == "depthavg" && spec.depthavg_linear.has_value();
     p.theory = exact_theories(c, !linear);
@@ -168,6 +170,7 @@ SweepPoint run_point(const SweepSpec& spec, const Task& task, const RunControl& 
   } catch (const std::exception& e) {
     p.completed = false;
     p.message = e.what();
+    if (std::isnan(p.growth_rate)) p.growth_reason = "the run did not complete: " + p.message;
   }
   return p;
 }

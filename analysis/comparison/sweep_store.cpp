@@ -159,21 +159,34 @@ void check_stored_settings(const std::string& path, const SweepSpec& spec) {
                                 "); remove it or choose another file to resume from");
 }
 
+// Each point: the model (1 twod, 0 depthavg), its row, then its growth_reason as its length and
+// one character code per number (a reason is short, and the collectives move numbers only).
 std::vector<double> pack_points(const std::vector<SweepPoint>& points) {
   std::vector<double> v;
   for (const auto& p : points) {
     v.push_back(p.model == "twod" ? 1.0 : 0.0);
     const auto r = row(p);
     v.insert(v.end(), r.begin(), r.end());
+    v.push_back(static_cast<double>(p.growth_reason.size()));
+    for (const char c : p.growth_reason) v.push_back(static_cast<unsigned char>(c));
   }
   return v;
 }
 
 std::vector<SweepPoint> unpack_points(std::span<const double> packed) {
   std::vector<SweepPoint> points;
-  for (std::size_t i = 0; i + kWidth < packed.size(); i += kWidth + 1)
+  std::size_t i = 0;
+  while (i + kWidth + 1 < packed.size()) {
     points.push_back(
         from_row(packed[i] == 1.0 ? "twod" : "depthavg", packed.subspan(i + 1, kWidth)));
+    i += kWidth + 1;
+    const auto length = static_cast<std::size_t>(packed[i++]);
+    if (i + length > packed.size())
+      throw std::invalid_argument("unpack_points: a reason runs past the end of the numbers");
+    for (const double c : packed.subspan(i, length))
+      points.back().growth_reason.push_back(static_cast<char>(static_cast<unsigned char>(c)));
+    i += length;
+  }
   return points;
 }
 
@@ -183,14 +196,17 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
   std::vector<double> k_hat;
   for (const char* model : {"depthavg", "twod"}) {
     std::vector<std::vector<double>> cols(kWidth);
+    std::vector<std::string> reasons;
     for (const auto& p : points)
       if (p.model == model) {
         const auto r = row(p);
         for (std::size_t c = 0; c < r.size(); ++c) cols[c].push_back(r[c]);
+        reasons.push_back(p.growth_reason);
       }
     if (cols[0].empty()) continue;
     for (std::size_t c = 0; c < cols.size(); ++c)
       out.write(std::string(model) + "/" + kColumns[c], cols[c]);
+    out.write(std::string(model) + "/growth_reason", std::span<const std::string>(reasons));
     if (std::string(model) == "depthavg") k_hat = cols[1];
   }
   const ChuteCase& k = spec.chute;
@@ -226,10 +242,15 @@ std::vector<SweepPoint> read_sweep(const std::string& path) {
     for (const char* c : kColumns)
       cols.push_back(h5_has(path, g + c) ? h5_read_doubles(path, g + c)
                                          : std::vector<double>(n, NAN));
+    // (a file written before the reasons were kept has none: the report says so)
+    const std::vector<std::string> reasons = h5_has(path, g + "growth_reason")
+                                                 ? h5_read_strings(path, g + "growth_reason")
+                                                 : std::vector<std::string>(n);
     for (std::size_t i = 0; i < cols[0].size(); ++i) {
       std::vector<double> r;
       for (const auto& col : cols) r.push_back(col.at(i));
       points.push_back(from_row(model, r));
+      points.back().growth_reason = reasons.at(i);
     }
   }
   return points;

@@ -70,7 +70,7 @@ TEST(SweepCli, ResumesFromTheOutputFileAndRunsOnlyTheNewPoints) {
 }
 
 // A point without a growth rate says why, in the JSON and under the table: the measurement's
-// reason where the point ran; a note that it was not kept where the point was read back.
+// reason, also where the point was read back from the sweep file.
 TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
   const std::string out = temp_file("reason.h5");
   std::filesystem::remove(out);
@@ -91,7 +91,7 @@ TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
   const auto table = run_granbench(args, "sweep_reason_table_" + std::to_string(getpid()));
   ASSERT_EQ(table.code, 0) << table.err;
   // (read back from the file this time)
-  EXPECT_NE(table.out.find("twod at Lx = 0.08 m: growth not measured: the reason is not kept"),
+  EXPECT_NE(table.out.find("twod at Lx = 0.08 m: growth not measured: too short"),
             std::string::npos)
       << table.out;
   const auto again =
@@ -99,7 +99,7 @@ TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
   ASSERT_EQ(again.code, 0) << again.err;
   for (const auto& p : nlohmann::json::parse(again.out)["points"]) {
     EXPECT_TRUE(p["resumed"].get<bool>()) << p;
-    EXPECT_NE(p["growth_reason"].get<std::string>().find("not kept"), std::string::npos) << p;
+    EXPECT_NE(p["growth_reason"].get<std::string>().find("too short"), std::string::npos) << p;
   }
   std::filesystem::remove(out);
 }

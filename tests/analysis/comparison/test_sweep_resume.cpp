@@ -2,7 +2,9 @@
 // that the ranks of a killed multi-process run left in their part files; a stored sweep with
 // other settings is refused; points survive packing for the trip between processes.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "analysis/comparison/sweep.hpp"
@@ -96,24 +98,56 @@ TEST(Sweep, ResumesFromThePartFilesOfAKilledMultiProcessRun) {
   std::filesystem::remove(path);
 }
 
-TEST(Sweep, PointsSurvivePacking) {
+namespace {
+// Two points, the second without a growth rate and with the measurement's reason.
+std::vector<SweepPoint> two_points() {
   SweepPoint a, b;
   a.model = "depthavg";
   a.Lx = 0.05;
+  a.k_hat = 0.5;
   a.growth_rate = 1.25;
   a.completed = true;
   b.model = "twod";
   b.Lx = 0.07;
+  b.growth_rate = NAN;
+  b.growth_reason = "too short: 15 samples after the transient (t >= 0.005 s); need 16";
   b.theory.exact_2d.phase_speed = 1.14;
   b.steps = 123;
-  const auto back = unpack_points(pack_points({a, b}));
+  return {a, b};
+}
+
+void expect_two_points(const std::vector<SweepPoint>& back) {
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[0].model, "depthavg");
   EXPECT_EQ(back[0].growth_rate, 1.25);
+  EXPECT_EQ(back[0].growth_reason, "");
   EXPECT_TRUE(back[0].completed);
   EXPECT_EQ(back[1].model, "twod");
   EXPECT_EQ(back[1].Lx, 0.07);
+  EXPECT_TRUE(std::isnan(back[1].growth_rate));
+  EXPECT_EQ(back[1].growth_reason, two_points()[1].growth_reason);
   EXPECT_EQ(back[1].theory.exact_2d.phase_speed, 1.14);
   EXPECT_EQ(back[1].steps, 123);
   EXPECT_FALSE(back[1].completed);
+}
+}  // namespace
+
+// Between processes (MPI ranks) and through the sweep file, a point keeps its numbers and the
+// reason it has no growth rate.
+TEST(Sweep, PointsAndTheirReasonsSurvivePacking) {
+  expect_two_points(unpack_points(pack_points(two_points())));
+  // a reason followed by a third point: the lengths keep the points apart
+  auto three = two_points();
+  three.push_back(three[0]);
+  const auto back = unpack_points(pack_points(three));
+  ASSERT_EQ(back.size(), 3u);
+  EXPECT_EQ(back[2].growth_rate, 1.25);
+}
+
+TEST(Sweep, PointsAndTheirReasonsSurviveTheFile) {
+  const std::string path = std::filesystem::temp_directory_path() /
+                           ("granbench_sweep_reasons_" + std::to_string(getpid()) + ".h5");
+  write_sweep(path, linear_spec(path), two_points());
+  expect_two_points(read_sweep(path));
+  std::filesystem::remove(path);
 }

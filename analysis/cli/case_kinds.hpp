@@ -8,6 +8,7 @@
 
 #include "analysis/cases/case_file.hpp"
 #include "analysis/cli/cli_common.hpp"
+#include "analysis/cli/shipped_files.hpp"
 
 namespace granbench::cli {
 
@@ -16,7 +17,7 @@ struct CaseOptions {
   bool list = false;
   std::string resolution = "paper";
   std::string out_dir = ".";
-  std::string cases_dir = GRANBENCH_CASES_DIR;
+  std::string cases_dir = shipped_cases_dir();
   unsigned jobs = 2;
   OutputOptions output;
 };

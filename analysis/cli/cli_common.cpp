@@ -10,6 +10,7 @@
 #include <limits>
 #include <sstream>
 
+#include "analysis/cli/shipped_files.hpp"
 #include "twod/parallel.hpp"
 
 namespace granbench::cli {
@@ -234,8 +235,8 @@ void print_json(const nlohmann::json& j) {
 void run_plot_script(const std::string& script, const std::string& h5, const std::string& png,
                      const std::string& extra_args) {
   const std::string python = "/usr/bin/python3";
-  const std::string cmd = python + " '" + std::string(GRANBENCH_PLOT_DIR) + "/" + script + "' '" +
-                          h5 + "' '" + png + "' " + extra_args;
+  const std::string cmd = python + " '" + shipped_plot_dir() + "/" + script + "' '" + h5 + "' '" +
+                          png + "' " + extra_args;
   if (std::system(cmd.c_str()) != 0)
     throw std::runtime_error("plotting failed (" + cmd +
                              "); needs python3-matplotlib, python3-h5py");

@@ -14,6 +14,7 @@
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/config_file.hpp"
+#include "analysis/cli/shipped_files.hpp"
 #include "analysis/cli/suggest.hpp"
 #include "common/provenance.hpp"
 
@@ -73,7 +74,9 @@ int main(int argc, char** argv) {
   app.footer(kFooter);
   app.set_version_flag("--version", "granbench " + granbench::granbench_version() + " (commit " +
                                         granbench::granbench_git_commit() + ", " +
-                                        granbench::granbench_code_target() + " code)");
+                                        granbench::granbench_code_target() +
+                                        " code)\ncases: " + granbench::cli::shipped_cases_dir() +
+                                        "\nplots: " + granbench::cli::shipped_plot_dir());
   add_wellposed_command(app);
   add_steady_command(app);
   add_dispersion_command(app);

@@ -17,21 +17,17 @@ struct CommandResult {
   std::string out, err;
 };
 
-// `args` is appended to the path of the granbench binary, which follows `launcher` (e.g.
-// "mpirun -np 2 ", empty: none); stderr goes to a file in the temporary directory named after
-// `tag`, this process and the call, and is removed after reading. (Named after `tag` alone, the
-// file was shared by the tests of one suite, which ctest -j runs as concurrent processes: one
-// test once read the other's stderr.)
-inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli",
-                                   const std::string& launcher = "") {
+// Runs the shell command `cmd` with its stderr in a file in the temporary directory named after
+// `tag`, this process and the call, removed after reading. (Named after `tag` alone, the file was
+// shared by the tests of one suite, which ctest -j runs as concurrent processes: one test once
+// read the other's stderr.)
+inline CommandResult run_shell(const std::string& cmd, const std::string& tag) {
   static int calls = 0;  // tests call this from their main thread only
   const auto errfile = std::filesystem::temp_directory_path() /
                        ("granbench_" + tag + "_" + std::to_string(getpid()) + "_" +
                         std::to_string(++calls) + "_err.txt");
-  const std::string cmd = launcher + std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args +
-                          " 2>" + errfile.string();
   CommandResult r;
-  FILE* p = popen(cmd.c_str(), "r");
+  FILE* p = popen((cmd + " 2>" + errfile.string()).c_str(), "r");
   std::array<char, 4096> buf{};
   while (p && fgets(buf.data(), buf.size(), p)) r.out += buf.data();
   const int status = p ? pclose(p) : -1;
@@ -42,6 +38,13 @@ inline CommandResult run_granbench(const std::string& args, const std::string& t
   std::error_code ignored;
   std::filesystem::remove(errfile, ignored);
   return r;
+}
+
+// `args` is appended to the path of the granbench binary of this build tree, which follows
+// `launcher` (e.g. "mpirun -np 2 ", empty: none).
+inline CommandResult run_granbench(const std::string& args, const std::string& tag = "cli",
+                                   const std::string& launcher = "") {
+  return run_shell(launcher + std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args, tag);
 }
 
 }  // namespace granbench::testing

@@ -1,0 +1,64 @@
+// An installed granbench (`cmake --install`) runs without its source and build trees: it finds
+// its case files and plotting scripts under <prefix>/share/granbench (shipped_files.hpp), and
+// the build tree's command still finds them in the source tree.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "tests/support/run_granbench.hpp"
+
+namespace {
+
+using granbench::testing::run_shell;
+namespace fs = std::filesystem;
+
+TEST(Install, TheInstalledCommandFindsItsCasesAndPlotsUnderItsPrefix) {
+  const fs::path prefix =
+      fs::temp_directory_path() / ("granbench_install_" + std::to_string(getpid()));
+  fs::remove_all(prefix);
+  const auto installed = run_shell(std::string(GRANBENCH_CMAKE_COMMAND) + " --install " +
+                                       GRANBENCH_BINARY_DIR + " --prefix " + prefix.string(),
+                                   "install");
+  ASSERT_EQ(installed.code, 0) << installed.out << installed.err;
+  const std::string program = (prefix / "bin" / "granbench").string();
+  const fs::path share = prefix / "share" / "granbench";
+  ASSERT_TRUE(fs::exists(program));
+  EXPECT_TRUE(fs::exists(share / "cases" / "rollwave-8cm.toml"));
+  EXPECT_TRUE(fs::exists(share / "plots" / "dispersion.py"));
+
+  const auto version = run_shell(program + " --version", "install_version");
+  ASSERT_EQ(version.code, 0) << version.err;
+  EXPECT_NE(version.out.find("cases: " + (share / "cases").string()), std::string::npos)
+      << version.out;
+  EXPECT_NE(version.out.find("plots: " + (share / "plots").string()), std::string::npos)
+      << version.out;
+
+  const auto list = run_shell(program + " case --list", "install_list");
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_NE(list.out.find("rollwave-8cm"), std::string::npos) << list.out;
+
+  // a figure drawn by the installed script, from a directory of its own
+  const fs::path work = prefix / "work";
+  fs::create_directories(work);
+  const auto plot = run_shell("cd " + work.string() + " && " + program +
+                                  " dispersion --Lx 0.08 --out d.h5 --plot d.png --quiet",
+                              "install_plot");
+  ASSERT_EQ(plot.code, 0) << plot.out << plot.err;
+  EXPECT_TRUE(fs::exists(work / "d.png"));
+  fs::remove_all(prefix);
+}
+
+TEST(Install, TheBuildTreesCommandFindsThemInTheSourceTree) {
+  const auto version = granbench::testing::run_granbench("--version", "install_build_version");
+  ASSERT_EQ(version.code, 0) << version.err;
+  const fs::path source = GRANBENCH_SOURCE_DIR;
+  EXPECT_NE(version.out.find("cases: " + (source / "cases").string()), std::string::npos)
+      << version.out;
+  EXPECT_NE(version.out.find("plots: " + (source / "analysis" / "plots").string()),
+            std::string::npos)
+      << version.out;
+}
+
+}  // namespace

@@ -15,9 +15,11 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
       ->group(g)
       ->capture_default_str();
   app.add_option("--limiter", o.limiter,
-                 "slope reconstruction {central,minmod,mc,vanalbada}: central is unlimited (linear "
-                 "runs), vanalbada a smooth limiter")
-      ->check(one_of({"central", "minmod", "mc", "vanalbada"}))
+                 "slope reconstruction {auto,central,minmod,mc,vanalbada}: central is unlimited "
+                 "(linear runs), vanalbada a smooth limiter; auto is central while the seed, "
+                 "grown at the (7.11) rate, stays below 5 % of h0 to the run's end, vanalbada "
+                 "where it grows past it (as compare and sweep do)")
+      ->check(one_of({"auto", "central", "minmod", "mc", "vanalbada"}))
       ->group(g)
       ->capture_default_str();
   app.add_option("--frame-speed", o.frame_speed,
@@ -25,6 +27,11 @@ void add_depthavg_options(CLI::App& app, DepthAvgOptions& o) {
                  "mode's (7.11) phase speed, or 0 for the lab frame; output is in the lab frame")
       ->group(g)
       ->capture_default_str();
+}
+
+depthavg::Reconstruction limiter_for_seed(const std::string& limiter, bool seed_saturates) {
+  if (limiter != "auto") return depthavg::parse_reconstruction(limiter);
+  return seed_saturates ? depthavg::Reconstruction::VanAlbada : depthavg::Reconstruction::Central;
 }
 
 namespace {

@@ -31,6 +31,12 @@ void print_depthavg_run(const RunOptions& o, const nlohmann::json& j, const Meas
               << "  CVODE            " << j.at("steps").get<long>() << " steps, "
               << j.at("rhs_evals").get<long>() << " RHS evaluations, "
               << j.at("linear_solves").get<long>() << " linear solves\n"
+              << "  slopes           " << j.at("limiter").get<std::string>()
+              << (j.at("limiter_option") != "auto" ? ""
+                  : j.at("limiter") == "central"
+                      ? " (--limiter auto: the seed stays below 5 % of h0 to the end)"
+                      : " (--limiter auto: the seed grows past 5 % of h0 before the end)")
+              << "\n"
               << "  mass error       " << j.at("mass_error").get<double>() << " (relative)\n"
               << "  flux at end      " << j.at("flux").get<double>() << " m^2/s\n"
               << "  growth rate      " << show(j.at("growth_rate"))
@@ -92,7 +98,8 @@ void write_depthavg_run(const RunOptions& o, const DepthAvgOptions& mo,
            {"model", "depthavg"},
            {"curve", o.flow.curve},
            {"init", o.init},
-           {"limiter", mo.limiter},
+           {"limiter", j.at("limiter").get<std::string>()},  // the one used
+           {"limiter_option", mo.limiter},
            {"status", j.at("status").get<std::string>()},
            {"message", r.message},
            {"results_json", j.dump()}})

@@ -15,6 +15,7 @@
 #include "analysis/cli/depthavg_report.hpp"
 #include "analysis/cli/output_checks.hpp"
 #include "analysis/cli/run_model.hpp"
+#include "analysis/comparison/model_runs.hpp"
 #include "analysis/spectral/measurement.hpp"
 #include "analysis/theory/dispersion.hpp"
 #include "common/steady_state.hpp"
@@ -34,7 +35,13 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
   space.Lx = o.Lx;
   space.nx = o.nx;
   space.chi = chi;
-  space.reconstruction = depthavg::parse_reconstruction(mo.limiter);
+  ChuteCase seeded = o.flow.chute(o.Lx);  // the seed and run length that --limiter auto judges
+  seeded.a0 = o.a0;
+  seeded.t_end = o.t_end;
+  const bool seed_saturates =
+      DepthAvgSettings{}.limited_where_it_saturates(seeded, exact.growth_rate).reconstruction !=
+      depthavg::Reconstruction::Central;
+  space.reconstruction = limiter_for_seed(mo.limiter, seed_saturates);
   space.frame_speed = parse_frame_speed(mo.frame_speed, exact.phase_speed);
   depthavg::IntegratorParams integ;
   integ.rtol = o.rtol;
@@ -108,6 +115,8 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
                       {"phase_speed_exact", exact.phase_speed},
                       {"dt_out", out.dt_out},
                       {"frame_speed", space.frame_speed},
+                      {"limiter", depthavg::reconstruction_name(space.reconstruction)},
+                      {"limiter_option", mo.limiter},
                       {"F", base.Fr},
                       {"R", base.R},
                       {"Gamma", base.Gamma},

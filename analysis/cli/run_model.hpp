@@ -16,6 +16,7 @@
 
 #include "analysis/cli/cli_common.hpp"
 #include "common/failure_policy.hpp"
+#include "depthavg/params.hpp"
 
 namespace granbench::cli {
 
@@ -46,13 +47,19 @@ void add_run_options(CLI::App& app, RunOptions& o);
 // Depth-averaged model's own options.
 struct DepthAvgOptions {
   std::string chi = "1";  // shape factor: 1, bagnold (5/4) or a number >= 1
-  std::string limiter = "central";
+  // Slope reconstruction: a name of depthavg::parse_reconstruction, or "auto" (limiter_for_seed)
+  std::string limiter = "auto";
   // Computational frame: 0 (lab), linear (the seeded mode's (7.11) phase speed), or a speed
   // [m/s]. Co-moving by default: a wave that travels at about that speed is nearly steady in it,
   // so CVODE takes ~20 times fewer steps; the output is in the lab frame either way.
   std::string frame_speed = "linear";
 };
 void add_depthavg_options(CLI::App& app, DepthAvgOptions& o);
+// The reconstruction of --limiter: the named one, or for "auto" the rule of compare and sweep
+// (DepthAvgSettings::limited_where_it_saturates): central slopes, which measure the linear regime
+// cleanly, while the seed stays below the measurement's linear bound; van Albada's limiter where
+// it grows past it before the run's end (a wave with fronts, where central slopes oscillate).
+depthavg::Reconstruction limiter_for_seed(const std::string& limiter, bool seed_saturates);
 // Shape factor from its option text; UsageError naming --chi otherwise.
 double parse_chi(const std::string& text);
 // Frame speed from its option text ('linear': `linear_speed`); UsageError naming --frame-speed.

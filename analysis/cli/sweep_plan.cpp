@@ -30,7 +30,8 @@ depthavg::LinearRunParams linear_params(const SweepOptions& o) {
   lp.nx = o.nx;
   lp.tolerance = o.tolerance;
   lp.t_end = o.t_end;
-  lp.reconstruction = depthavg::parse_reconstruction(o.depthavg.limiter);
+  // (a linear run's seed stays far below the linear bound: auto is central)
+  lp.reconstruction = limiter_for_seed(o.depthavg.limiter, false);
   lp.co_moving = o.depthavg.frame_speed == "linear";
   return lp;
 }

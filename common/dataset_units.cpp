@@ -121,6 +121,7 @@ const std::map<std::string, DatasetDoc>& by_name() {
       {"cells_x", {"1", "cells of the point's run along x"}},
       {"cells_z", {"1", "cells of the point's 2D run across the layer (NaN: depth-averaged)"}},
       {"growth_reason", {"text", "why the point has no growth rate (empty where it has one)"}},
+      {"message", {"text", "why the point's run did not complete, or what it lacks (empty: none)"}},
   };
   return t;
 }

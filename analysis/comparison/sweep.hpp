@@ -53,7 +53,7 @@ struct SweepPoint {
   double growth_rate_extrapolated_low = NAN, growth_rate_extrapolated_high = NAN;  // its bounds
   bool completed = false;
   bool resumed = false;  // read back from an earlier run (not stored)
-  std::string message;   // why a point did not complete (not stored)
+  std::string message;   // why a point did not complete, or what its measurement lacks
   // Why growth_rate is NaN (the measurement's reason: no clean window, ...); empty where it has
   // one, and for a point read from a file written before the reasons were stored
   std::string growth_reason;
@@ -124,15 +124,14 @@ std::vector<SweepPoint> finish_sweep(const SweepSpec& spec, std::vector<SweepPoi
 
 // The store of rank r of several: "<out>.rank<r>.h5".
 std::string sweep_part_path(const std::string& out, int rank);
-// Points as one array of numbers (the stored columns and the growth reason), to send between
-// processes.
+// Points as one array of numbers (the stored columns and texts), to send between processes.
 std::vector<double> pack_points(const std::vector<SweepPoint>& points);
 std::vector<SweepPoint> unpack_points(std::span<const double> packed);
 
-// The HDF5 file: per model a group of columns (Lx, k_hat, growth_rate, ..., and the text column
-// growth_reason); the run settings as the dataset "settings" (names in its attribute "names"),
-// and root attributes for the figures; with depthavg points, the exact curve (7.11) with the
-// run's chi in the group "curve".
+// The HDF5 file: per model a group of columns (Lx, k_hat, growth_rate, ..., and the text columns
+// growth_reason and message); the run settings as the dataset "settings" (names in its attribute
+// "names"), and root attributes for the figures; with depthavg points, the exact curve (7.11)
+// with the run's chi in the group "curve".
 void write_sweep(const std::string& path, const SweepSpec& spec,
                  const std::vector<SweepPoint>& points);
 std::vector<SweepPoint> read_sweep(const std::string& path);

@@ -116,6 +116,12 @@ std::vector<double> row(SweepPoint p) {
   r.push_back(p.completed ? 1.0 : 0.0);
   return r;
 }
+// The stored text of a point, by column name: why it has no growth rate, why it did not complete.
+const char* const kTextColumns[] = {"growth_reason", "message"};
+std::vector<std::string*> texts(SweepPoint& p) {
+  return {&p.growth_reason, &p.message};
+}
+
 SweepPoint from_row(const std::string& model, std::span<const double> r) {
   SweepPoint p;
   p.model = model;
@@ -159,16 +165,18 @@ void check_stored_settings(const std::string& path, const SweepSpec& spec) {
                                 "); remove it or choose another file to resume from");
 }
 
-// Each point: the model (1 twod, 0 depthavg), its row, then its growth_reason as its length and
-// one character code per number (a reason is short, and the collectives move numbers only).
+// Each point: the model (1 twod, 0 depthavg), its row, then each of its texts as its length and
+// one character code per number (the texts are short, and the collectives move numbers only).
 std::vector<double> pack_points(const std::vector<SweepPoint>& points) {
   std::vector<double> v;
-  for (const auto& p : points) {
+  for (SweepPoint p : points) {
     v.push_back(p.model == "twod" ? 1.0 : 0.0);
     const auto r = row(p);
     v.insert(v.end(), r.begin(), r.end());
-    v.push_back(static_cast<double>(p.growth_reason.size()));
-    for (const char c : p.growth_reason) v.push_back(static_cast<unsigned char>(c));
+    for (const std::string* text : texts(p)) {
+      v.push_back(static_cast<double>(text->size()));
+      for (const char c : *text) v.push_back(static_cast<unsigned char>(c));
+    }
   }
   return v;
 }
@@ -180,12 +188,14 @@ std::vector<SweepPoint> unpack_points(std::span<const double> packed) {
     points.push_back(
         from_row(packed[i] == 1.0 ? "twod" : "depthavg", packed.subspan(i + 1, kWidth)));
     i += kWidth + 1;
-    const auto length = static_cast<std::size_t>(packed[i++]);
-    if (i + length > packed.size())
-      throw std::invalid_argument("unpack_points: a reason runs past the end of the numbers");
-    for (const double c : packed.subspan(i, length))
-      points.back().growth_reason.push_back(static_cast<char>(static_cast<unsigned char>(c)));
-    i += length;
+    for (std::string* text : texts(points.back())) {
+      const auto length = i < packed.size() ? static_cast<std::size_t>(packed[i++]) : 0;
+      if (i + length > packed.size())
+        throw std::invalid_argument("unpack_points: a text runs past the end of the numbers");
+      for (const double c : packed.subspan(i, length))
+        text->push_back(static_cast<char>(static_cast<unsigned char>(c)));
+      i += length;
+    }
   }
   return points;
 }
@@ -196,17 +206,20 @@ void write_sweep(const std::string& path, const SweepSpec& spec,
   std::vector<double> k_hat;
   for (const char* model : {"depthavg", "twod"}) {
     std::vector<std::vector<double>> cols(kWidth);
-    std::vector<std::string> reasons;
-    for (const auto& p : points)
+    std::vector<std::vector<std::string>> text_cols(std::size(kTextColumns));
+    for (SweepPoint p : points)
       if (p.model == model) {
         const auto r = row(p);
         for (std::size_t c = 0; c < r.size(); ++c) cols[c].push_back(r[c]);
-        reasons.push_back(p.growth_reason);
+        const auto t = texts(p);
+        for (std::size_t c = 0; c < t.size(); ++c) text_cols[c].push_back(*t[c]);
       }
     if (cols[0].empty()) continue;
     for (std::size_t c = 0; c < cols.size(); ++c)
       out.write(std::string(model) + "/" + kColumns[c], cols[c]);
-    out.write(std::string(model) + "/growth_reason", std::span<const std::string>(reasons));
+    for (std::size_t c = 0; c < text_cols.size(); ++c)
+      out.write(std::string(model) + "/" + kTextColumns[c],
+                std::span<const std::string>(text_cols[c]));
     if (std::string(model) == "depthavg") k_hat = cols[1];
   }
   const ChuteCase& k = spec.chute;
@@ -242,15 +255,17 @@ std::vector<SweepPoint> read_sweep(const std::string& path) {
     for (const char* c : kColumns)
       cols.push_back(h5_has(path, g + c) ? h5_read_doubles(path, g + c)
                                          : std::vector<double>(n, NAN));
-    // (a file written before the reasons were kept has none: the report says so)
-    const std::vector<std::string> reasons = h5_has(path, g + "growth_reason")
-                                                 ? h5_read_strings(path, g + "growth_reason")
-                                                 : std::vector<std::string>(n);
+    // (a file written before the texts were kept has none: the report says so)
+    std::vector<std::vector<std::string>> text_cols;
+    for (const char* c : kTextColumns)
+      text_cols.push_back(h5_has(path, g + c) ? h5_read_strings(path, g + c)
+                                              : std::vector<std::string>(n));
     for (std::size_t i = 0; i < cols[0].size(); ++i) {
       std::vector<double> r;
       for (const auto& col : cols) r.push_back(col.at(i));
       points.push_back(from_row(model, r));
-      points.back().growth_reason = reasons.at(i);
+      const auto t = texts(points.back());
+      for (std::size_t c = 0; c < t.size(); ++c) *t[c] = text_cols[c].at(i);
     }
   }
   return points;

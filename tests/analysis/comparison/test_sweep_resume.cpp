@@ -111,6 +111,7 @@ std::vector<SweepPoint> two_points() {
   b.Lx = 0.07;
   b.growth_rate = NAN;
   b.growth_reason = "too short: 15 samples after the transient (t >= 0.005 s); need 16";
+  b.message = "twod run diverged at t = 0.0954 s: u = 160 m/s at x = 0.0412 m, z = 0.0045 m";
   b.theory.exact_2d.phase_speed = 1.14;
   b.steps = 123;
   return {a, b};
@@ -126,14 +127,16 @@ void expect_two_points(const std::vector<SweepPoint>& back) {
   EXPECT_EQ(back[1].Lx, 0.07);
   EXPECT_TRUE(std::isnan(back[1].growth_rate));
   EXPECT_EQ(back[1].growth_reason, two_points()[1].growth_reason);
+  EXPECT_EQ(back[1].message, two_points()[1].message);
+  EXPECT_EQ(back[0].message, "");
   EXPECT_EQ(back[1].theory.exact_2d.phase_speed, 1.14);
   EXPECT_EQ(back[1].steps, 123);
   EXPECT_FALSE(back[1].completed);
 }
 }  // namespace
 
-// Between processes (MPI ranks) and through the sweep file, a point keeps its numbers and the
-// reason it has no growth rate.
+// Between processes (MPI ranks) and through the sweep file, a point keeps its numbers, the
+// reason it has no growth rate and why its run did not complete.
 TEST(Sweep, PointsAndTheirReasonsSurvivePacking) {
   expect_two_points(unpack_points(pack_points(two_points())));
   // a reason followed by a third point: the lengths keep the points apart

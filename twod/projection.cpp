@@ -39,6 +39,17 @@ Projection::Projection(const Grid& g, const SolverParams& params)
   solver_.set_lines(std::move(lines));
 }
 
+void fill_pressure_operator(const Grid& g, const Properties& props, PoissonLevel& op) {
+  const int nx = g.nx, nz = g.nz;
+  const double cx = g.dz / g.dx, cz = g.dx / g.dz;  // area / distance
+  parallel_for(nx, true, [&](int i) {
+    for (int k = 0; k < nz; ++k) op.cx[op.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
+    op.cz[op.zface(i, 0)] = 0.0;  // bed: no flux
+    for (int k = 1; k < nz; ++k) op.cz[op.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
+    op.cz[op.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
+  });
+}
+
 int Projection::project(const std::vector<double>& u_star, const std::vector<double>& w_star,
                         const Properties& props, double dt, Fields& s) {
   const Grid& g = g_;
@@ -56,12 +67,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {
     PoissonLevel& op = multigrid_.fine_operator(nx, nz, g.dx / g.dz);  // filled in place
-    parallel_for(nx, true, [&](int i) {
-      for (int k = 0; k < nz; ++k) op.cx[op.cell(i, k)] = cx / props.rho_u[g.at(i, k)];
-      op.cz[op.zface(i, 0)] = 0.0;  // bed: no flux
-      for (int k = 1; k < nz; ++k) op.cz[op.zface(i, k)] = cz / props.rho_w[g.at(i, k)];
-      op.cz[op.zface(i, nz)] = 2.0 * cz / props.rho_w[g.at(i, nz)];  // dp = 0 at top
-    });
+    fill_pressure_operator(g, props, op);
     multigrid_.rebuild();
     iterations =
         pcg([&](const Eigen::VectorXd& v, Eigen::VectorXd& y) { op.apply(v, y); },

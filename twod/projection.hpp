@@ -12,6 +12,11 @@
 
 namespace granbench::twod {
 
+// The multigrid's finest operator for the densities of props: -div((1/rho) grad dp) V on the
+// cells, face by face (area / distance / rho), no flux through the bed, dp = 0 at the top.
+// op must be sized nx x nz (PressureMultigrid::fine_operator).
+void fill_pressure_operator(const Grid& g, const Properties& props, PoissonLevel& op);
+
 class Projection {
  public:
   Projection(const Grid& g, const SolverParams& params);

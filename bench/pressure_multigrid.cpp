@@ -2,7 +2,7 @@
 // conjugate gradients of twod/projection.cpp on the pressure operator of a real state of the §7
 // rollwave case (Lx = 0.08 m, zeta = 28.5 deg, h0 = 4 mm, a0 = 0.2 mm, Lz = 2 h0), after the
 // solver has run to t_state, so that the operator holds the wavy surface's density jump as the
-// VOF left it (the faces' densities from the fill fractions, about 900 against 0.015 kg/m^3).
+// VOF left it (the faces' densities from the fill fractions, 1500 against 0.015 kg/m^3).
 //
 // Per grid it solves A x = b from x = 0 to the projection's tolerance, for b a fixed
 // pseudo-random field (white: every scale of the error is excited, the smooth ones that the
@@ -20,6 +20,7 @@
 // One thread (the solve's arithmetic is the same for any count; parallel.hpp).
 #include "twod/pressure_multigrid.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,7 @@
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 

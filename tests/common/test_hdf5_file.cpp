@@ -4,11 +4,13 @@
 #include <filesystem>
 
 #include "common/hdf5_file.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace granbench;
 
 TEST(Hdf5File, SurfaceSeriesRoundTrip) {
-  const std::string path = std::filesystem::temp_directory_path() / "granbench_test_series.h5";
+  const granbench::testing::ScratchDir dir("gb_hdf5_series");
+  const std::string path = dir / "series.h5";
   SurfaceSeries s = SurfaceSeries::uniform_grid(0.08, 4, 4e-3);
   s.append(0.0, std::vector<double>{1, 2, 3, 4});
   s.append(0.5, std::vector<double>{5, 6, 7, 8});
@@ -21,12 +23,11 @@ TEST(Hdf5File, SurfaceSeriesRoundTrip) {
   EXPECT_EQ(r.h, s.h);
   EXPECT_EQ(r.t, s.t);
   EXPECT_NEAR(r.Lx, 0.08, 1e-15);
-  std::filesystem::remove(path);
 }
 
 TEST(Hdf5File, UnclosedWriterLeavesNoFile) {
-  const std::string path = std::filesystem::temp_directory_path() / "granbench_test_partial.h5";
-  std::filesystem::remove(path);
+  const granbench::testing::ScratchDir dir("gb_hdf5_partial");
+  const std::string path = dir / "partial.h5";
   {
     H5Writer out(path);
     out.write("a", std::vector<double>{1.0});

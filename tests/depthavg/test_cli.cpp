@@ -2,60 +2,29 @@
 // rejected with exit code 2 and one line naming the option, without writing output; a short run
 // and sweep produce the documented JSON keys.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "common/hdf5_file.hpp"
+#include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::h5_read_string_attribute;
+using granbench::testing::CommandResult;
+using granbench::testing::ScratchDir;
 
-struct Result {
-  int code;
-  std::string out;
-};
-
-// One stderr file per test process (ctest may run the tests of this file in parallel).
-std::string stderr_path() {
-  return (std::filesystem::temp_directory_path() /
-          ("granbench_cli_err_" + std::to_string(getpid()) + ".txt"))
-      .string();
-}
-
-Result granbench(const std::string& args) {
-  const std::string cmd =
-      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + stderr_path();
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), p)) out += buf.data();
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-std::string last_stderr() {
-  std::string s;
-  if (FILE* f = std::fopen(stderr_path().c_str(), "r")) {
-    std::array<char, 4096> buf{};
-    while (std::fgets(buf.data(), buf.size(), f)) s += buf.data();
-    std::fclose(f);
-  }
-  return s;
+CommandResult granbench_cli(const std::string& args) {
+  return granbench::testing::run_granbench(args, "depthavg_cli");
 }
 
 TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
-  const std::string out =
-      (std::filesystem::temp_directory_path() / ("gb_cli_bad_" + std::to_string(getpid()) + ".h5"))
-          .string();
-  std::filesystem::remove(out);
+  const ScratchDir dir("gb_cli_bad");
+  const std::string out = dir / "out.h5";
   const std::pair<std::string, std::string> cases[] = {
       {"run --model depthavg --nx 2", "--nx"},
       {"run --model depthavg --chi 0.5", "--chi"},
@@ -72,9 +41,9 @@ TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
       {"sweep --model depthavg --jobs 0", "--jobs"},
   };
   for (const auto& [args, option] : cases) {
-    const auto r = granbench(args + " --out " + out);
+    const auto r = granbench_cli(args + " --out " + out);
     EXPECT_EQ(r.code, 2) << args;
-    const std::string err = last_stderr();
+    const std::string& err = r.err;
     EXPECT_NE(err.find(option), std::string::npos) << args << ": " << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << args << ": " << err;
     EXPECT_FALSE(std::filesystem::exists(out)) << args;
@@ -82,15 +51,13 @@ TEST(DepthAvgCli, BadOptionsAreRejectedNamingTheOption) {
 }
 
 TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
-  const std::string out =
-      (std::filesystem::temp_directory_path() / ("gb_cli_run_" + std::to_string(getpid()) + ".h5"))
-          .string();
-  std::filesystem::remove(out);
-  const auto r = granbench(
+  const ScratchDir dir("gb_cli_run");
+  const std::string out = dir / "out.h5";
+  const auto r = granbench_cli(
       "run --model depthavg --init eigenmode --a0 4e-6 --Lx 0.08 --nx 64 --t-end 0.3 "
       "--rtol 1e-8 --atol 1e-14 --json --out " +
       out);
-  ASSERT_EQ(r.code, 0) << last_stderr();
+  ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key :
        {"steps", "wall_seconds", "mass_error", "h_mean", "flux", "growth_rate", "phase_speed",
@@ -102,7 +69,6 @@ TEST(DepthAvgCli, RunPrintsTheSharedJsonKeysAndWritesHdf5) {
               0.02 * j["growth_rate_exact"].get<double>());
   EXPECT_LT(j["mass_error"].get<double>(), 1e-13);
   EXPECT_TRUE(std::filesystem::exists(out));
-  std::filesystem::remove(out);
 }
 
 TEST(DepthAvgCli, AStalledRunSaysSoWithinSecondsAndNamesTheLimiter) {
@@ -111,35 +77,33 @@ TEST(DepthAvgCli, AStalledRunSaysSoWithinSecondsAndNamesTheLimiter) {
   // in --out, and a limited reconstruction runs the same case to the end: van Albada asked for,
   // and the default (--limiter auto), which chooses it because the seed of 0.2 mm (5 % of h0)
   // grows from the start.
-  const std::string out = (std::filesystem::temp_directory_path() /
-                           ("gb_cli_stall_" + std::to_string(getpid()) + ".h5"))
-                              .string();
-  std::filesystem::remove(out);
+  const ScratchDir dir("gb_cli_stall");
+  const std::string out = dir / "out.h5";
   const std::string args =
       "run --model depthavg --angle 40 --Lx 0.08 --nx 32 --t-end 0.1 --quiet --out " + out;
-  const auto r = granbench(args + " --limiter central");
+  const auto r = granbench_cli(args + " --limiter central");
   EXPECT_EQ(r.code, 3);
-  const std::string err = last_stderr();
+  const std::string& err = r.err;
   EXPECT_NE(err.find("the integration stalled"), std::string::npos) << err;
   EXPECT_NE(err.find("--limiter vanalbada"), std::string::npos) << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_TRUE(std::filesystem::exists(out));
   std::filesystem::remove(out);
-  EXPECT_EQ(granbench(args + " --limiter vanalbada").code, 0) << last_stderr();
+  const auto limited = granbench_cli(args + " --limiter vanalbada");
+  EXPECT_EQ(limited.code, 0) << limited.err;
   std::filesystem::remove(out);
-  const auto automatic = granbench(args + " --json");
-  ASSERT_EQ(automatic.code, 0) << last_stderr();
+  const auto automatic = granbench_cli(args + " --json");
+  ASSERT_EQ(automatic.code, 0) << automatic.err;
   const auto j = nlohmann::json::parse(automatic.out);
   EXPECT_EQ(j["limiter"], "vanalbada");
   EXPECT_EQ(j["limiter_option"], "auto");
   EXPECT_EQ(j["status"], "completed");
   EXPECT_EQ(h5_read_string_attribute(out, "/", "limiter"), "vanalbada");
-  std::filesystem::remove(out);
 }
 
 TEST(DepthAvgCli, SweepReportsPointsBesideTheExactRelation) {
-  const auto r = granbench("sweep --model depthavg --Lx 0.05:0.1:2 --nx 128 --jobs 2 --json");
-  ASSERT_EQ(r.code, 0) << last_stderr();
+  const auto r = granbench_cli("sweep --model depthavg --Lx 0.05:0.1:2 --nx 128 --jobs 2 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["points"].size(), 2u);
   for (const auto& p : j["points"]) {

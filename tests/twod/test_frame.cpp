@@ -12,6 +12,7 @@
 
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/small_twod_rollwave.hpp"
 #include "twod/diagnostics.hpp"
 #include "twod/frame.hpp"
@@ -159,13 +160,11 @@ TEST(CoMovingFrame, SnapshotsAreWrittenInTheLabFrame) {
   c.grid.frame_speed = 0.4;
   Solver solver = c.solver();
   solver.mutable_state().t = (5.25 * c.grid.dx) / c.grid.frame_speed;  // 5 cells + a quarter
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "granbench_test_frame_snapshot";
-  std::filesystem::create_directories(dir);
-  const std::string h5 = (dir / "s.h5").string();
+  const granbench::testing::ScratchDir dir("gb_frame_snapshot");
+  const std::string h5 = dir / "s.h5";
   {
     H5Writer out(h5);
-    SnapshotWriter w(out, "s.h5", (dir / "s.xdmf").string(), c.grid);
+    SnapshotWriter w(out, "s.h5", dir / "s.xdmf", c.grid);
     w.write(solver);
     w.finish();
     out.close();
@@ -183,5 +182,4 @@ TEST(CoMovingFrame, SnapshotsAreWrittenInTheLabFrame) {
     }
   EXPECT_NEAR(xz[0], 0.25 * g.dx, 1e-15);
   EXPECT_NEAR(h5_read_double_attribute(h5, "/snapshots/0000", "x_offset"), 0.25 * g.dx, 1e-15);
-  std::filesystem::remove_all(dir);
 }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/steady_state.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/small_twod_rollwave.hpp"
 #include "twod/checkpoint.hpp"
 #include "twod/initial_state.hpp"
@@ -53,13 +54,11 @@ TEST(RunControl, RunawayVelocityIsReportedWithTimeAndPlace) {
 }
 
 namespace {
-// A scratch file named after the running test: ctest runs each test in its own process, two at a
-// time, and the two restart tests writing one fixed name made each other fail now and then.
+// A scratch file of this test process (ctest runs each test in its own process, two at a time:
+// the two restart tests writing one fixed name made each other fail now and then).
 std::string scratch_path(const std::string& stem) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return (std::filesystem::temp_directory_path() /
-          (stem + "_" + info->test_suite_name() + "_" + info->name() + ".h5"))
-      .string();
+  static const granbench::testing::ScratchDir dir("gb_twod_run_control");
+  return dir / (stem + ".h5");
 }
 
 void expect_restart_continues_identically(const Case& c) {

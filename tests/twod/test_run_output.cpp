@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/steady_state.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "tests/support/small_twod_rollwave.hpp"
 #include "twod/checkpoint.hpp"
 #include "twod/initial_state.hpp"
@@ -101,11 +102,10 @@ TEST(TwodRunOutput, AnUnwritableCheckpointAtAStopKeepsTheRun) {
 TEST(TwodRunOutput, ARestartWithOtherPhysicsNamesTheParameter) {
   const Case c;
   const Solver solver = c.solver();
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "granbench_physics_checkpoint.h5").string();
+  const granbench::testing::ScratchDir dir("gb_physics_checkpoint");
+  const std::string path = dir / "checkpoint.h5";
   write_checkpoint(path, solver, c.empty_series(), {0.0, 0.5});
   const Checkpoint cp = read_checkpoint(path);
-  std::filesystem::remove(path);
   EXPECT_EQ(cp.snapshot_times, (std::vector<double>{0.0, 0.5}));
   EXPECT_EQ(restart_mismatch(cp, c.grid, c.params), "");
 

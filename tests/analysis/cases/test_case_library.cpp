@@ -13,14 +13,17 @@
 #include "analysis/cases/grid_dependence.hpp"
 #include "analysis/cases/layer_case.hpp"
 #include "analysis/cases/perturbation_energy.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace granbench::cases {
 namespace {
 
+// A case file in this process' scratch directory (its name is the case's name).
 std::string write_file(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  static const granbench::testing::ScratchDir dir("gb_case_library");
+  const std::string path = dir / name;
   std::ofstream(path) << text;
-  return path.string();
+  return path;
 }
 
 TEST(CaseFile, ResolutionTablesOverrideTopLevelKeys) {

@@ -9,18 +9,14 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("granbench_case_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using granbench::testing::ScratchDir;
 
 nlohmann::json run_case(const std::string& name, const fs::path& dir) {
   const auto r = run_granbench(
@@ -50,7 +46,8 @@ TEST(CaseSmoke, ListsThePaperCases) {
 // preset's 25 % of the exact 2D theory (docs/twod-validation.md). Run again, it resumes every
 // point from its files instead of running it.
 TEST(CaseSmoke, Figure13RunsBothProtocolsBesideTheTheories) {
-  const fs::path dir = fresh_dir("figure13");
+  const ScratchDir scratch("gb_case_figure13");
+  const fs::path& dir = scratch.path();
   const auto j = run_case("figure13", dir);
   ASSERT_EQ(j["points"].size(), 2u);
   for (const auto& p : j["points"]) {
@@ -84,13 +81,15 @@ TEST(CaseSmoke, Figure13RunsBothProtocolsBesideTheTheories) {
 }
 
 TEST(CaseSmoke, WellposedGivesTheNeutralPointsOfBothCurves) {
-  const auto j = run_case("wellposed", fresh_dir("wellposed"));
+  const ScratchDir scratch("gb_case_wellposed");
+  const auto j = run_case("wellposed", scratch.path());
   EXPECT_NEAR(j["curves"]["jop"]["I2N"].get<double>(), 0.28017, 1e-4);
   EXPECT_NEAR(j["curves"]["regularised"]["A_minus"].get<double>(), 15640.68, 0.05);
 }
 
 TEST(CaseSmoke, DeceleratingLayersSlowDownFromTheSameState) {
-  const auto j = run_case("decelerating", fresh_dir("decelerating"));
+  const ScratchDir scratch("gb_case_decelerating");
+  const auto j = run_case("decelerating", scratch.path());
   ASSERT_EQ(j["runs"].size(), 4u);
   for (const auto& r : j["runs"]) {
     EXPECT_EQ(r["status"], "completed") << r["label"];
@@ -111,7 +110,8 @@ TEST(CaseSmoke, DeceleratingLayersSlowDownFromTheSameState) {
 }
 
 TEST(CaseSmoke, HighSpeedRegularisedRunMovesTowardsItsOwnSteadyI) {
-  const auto j = run_case("high-speed", fresh_dir("high_speed"));
+  const ScratchDir scratch("gb_case_high_speed");
+  const auto j = run_case("high-speed", scratch.path());
   const auto& jop = run_named(j, "jop_16x8");
   const auto& reg = run_named(j, "regularised_16x8");
   EXPECT_NEAR(jop["initial_I"].get<double>(), 0.9873, 1e-3);  // Jop's I_zeta at 28.5 deg
@@ -125,7 +125,8 @@ TEST(CaseSmoke, HighSpeedRegularisedRunMovesTowardsItsOwnSteadyI) {
 }
 
 TEST(CaseSmoke, RollwaveRunsAndWritesItsFigures) {
-  const auto dir = fresh_dir("rollwave");
+  const ScratchDir scratch("gb_case_rollwave");
+  const fs::path& dir = scratch.path();
   const auto j = run_case("rollwave-8cm", dir);
   EXPECT_EQ(j["run"]["status"], "completed");
   EXPECT_NEAR(j["run"]["t_reached"].get<double>(), 0.2, 1e-12);
@@ -143,7 +144,8 @@ TEST(CaseSmoke, RollwaveRunsAndWritesItsFigures) {
 // the smoke window is positive (on this 3.5-cells-per-h0 grid it is no measure of the rate; the
 // full case compares it with the exact 2D theory's 0.974 1/s, docs/paper-cases.md).
 TEST(CaseSmoke, RollwaveFromTheEigenmodeGrowsAtItsRate) {
-  const auto j = run_case("rollwave-12cm-eigenmode", fresh_dir("rollwave_eigen"));
+  const ScratchDir scratch("gb_case_rollwave_eigen");
+  const auto j = run_case("rollwave-12cm-eigenmode", scratch.path());
   EXPECT_EQ(j["run"]["status"], "completed");
   ASSERT_TRUE(j["growth_712"]["growth_rate"].is_number()) << j["growth_712"];
   EXPECT_GT(j["growth_712"]["growth_rate"].get<double>(), 0.0);
@@ -159,8 +161,8 @@ TEST(CaseSmoke, BadInputIsOneLineExitTwoAndNoOutput) {
   EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
 
   // A case file with a slope out of range: rejected before anything runs or is written.
-  const auto cases = fresh_dir("bad_cases");
-  const auto out = fresh_dir("bad_out");
+  const ScratchDir cases_dir("gb_case_bad_cases"), out_dir("gb_case_bad_out");
+  const fs::path &cases = cases_dir.path(), &out = out_dir.path();
   std::ifstream in(std::string(GRANBENCH_SOURCE_DIR) + "/cases/decelerating.toml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("angle = 10.0"), 12, "angle = 95.0");

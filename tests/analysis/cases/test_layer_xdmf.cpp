@@ -3,7 +3,6 @@
 // (Debian's paraview), the file is opened with all three ParaView XDMF readers, which must show
 // every run's cells, the field I and every sample time (skipped without pvpython).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,13 +13,14 @@
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 TEST(LayerCaseXdmf, EveryRunAndSampleIsIndexedAndParaViewOpensIt) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_layer_xdmf_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_layer_xdmf");
+  const fs::path& dir = scratch.path();
   const auto r = granbench::testing::run_granbench(
       "case decelerating --resolution smoke --quiet --out-dir " + dir.string(), "layer_xdmf");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -58,7 +58,6 @@ TEST(LayerCaseXdmf, EveryRunAndSampleIsIndexedAndParaViewOpensIt) {
   }
 
   if (std::system("command -v pvpython >/dev/null 2>&1") != 0) {
-    fs::remove_all(dir);
     GTEST_SKIP() << "no pvpython: the ParaView readers are not tried";
   }
   const std::string xvfb =
@@ -71,5 +70,4 @@ TEST(LayerCaseXdmf, EveryRunAndSampleIsIndexedAndParaViewOpensIt) {
   std::stringstream pv;
   pv << std::ifstream(dir / "pv.txt").rdbuf();
   EXPECT_EQ(status, 0) << pv.str();
-  fs::remove_all(dir);
 }

@@ -3,7 +3,6 @@
 // --mu-inf has a validator and its errors name it; options that do not apply to the sweep's
 // model are refused, not ignored; a case directory that is not there is refused.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
@@ -16,7 +15,7 @@ namespace {
 using granbench::testing::run_granbench;
 
 granbench::testing::CommandResult run(const std::string& args) {
-  return run_granbench(args, "conventions_" + std::to_string(getpid()));
+  return run_granbench(args, "conventions");
 }
 
 // Exit 2 with one line that starts "granbench: error: " + `start` and holds `parts`.

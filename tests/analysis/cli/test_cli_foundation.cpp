@@ -1,36 +1,21 @@
 // The granbench command end to end: JSON values against the library, and bad input rejected
 // with exit code 2, one line naming the option, and no output file.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
+
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
+using granbench::testing::ScratchDir;
 
-Result run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string errfile = dir / "granbench_cli_err.txt";
-  const std::string cmd =
-      std::string(GRANBENCH_BINARY_DIR) + "/granbench " + args + " 2>" + errfile;
-  Result r{};
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  FILE* e = fopen(errfile.c_str(), "r");
-  while (e && fgets(buf.data(), buf.size(), e)) r.err += buf.data();
-  if (e) fclose(e);
-  return r;
+granbench::testing::CommandResult run(const std::string& args) {
+  return granbench::testing::run_granbench(args, "cli_foundation");
 }
 
 }  // namespace
@@ -63,7 +48,8 @@ TEST(CliFoundation, SteadyAndDispersionJson) {
 }
 
 TEST(CliFoundation, BadInputGivesOneLineExitTwoAndNoFile) {
-  const std::string out = std::filesystem::temp_directory_path() / "granbench_bad_input.h5";
+  const ScratchDir dir("gb_bad_input");
+  const std::string out = dir / "out.h5";
   struct Case {
     std::string args, option;
   };
@@ -93,9 +79,8 @@ TEST(CliFoundation, BadInputGivesOneLineExitTwoAndNoFile) {
 // JSON no longer had (linear_iterations, renamed linear_solves) and ended in an internal error,
 // exit 1, while every JSON test passed.
 TEST(CliFoundation, EveryCommandsTextReportCompletes) {
-  const auto dir = std::filesystem::temp_directory_path() / "granbench_text_reports";
-  std::filesystem::create_directories(dir);
-  const std::string out = (dir / "out.h5").string();
+  const ScratchDir dir("gb_text_reports");
+  const std::string out = dir / "out.h5";
   struct Case {
     std::string args, line;
   };
@@ -114,19 +99,16 @@ TEST(CliFoundation, EveryCommandsTextReportCompletes) {
     EXPECT_EQ(r.code, 0) << c.args << "\n" << r.err;
     EXPECT_NE(r.out.find(c.line), std::string::npos) << c.args << "\n" << r.out;
   }
-  std::filesystem::remove_all(dir);
 }
 
 // --plot without an extension writes NAME.png, and the report names that file.
 TEST(CliFoundation, APlotNamedWithoutExtensionIsWrittenAsPng) {
-  const auto dir = std::filesystem::temp_directory_path() / "granbench_plot_name";
-  std::filesystem::create_directories(dir);
-  const std::string stem = (dir / "wellposed").string();
+  const ScratchDir dir("gb_plot_name");
+  const std::string stem = dir / "wellposed";
   const auto r = run("wellposed --plot " + stem);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(stem + ".png"));
   EXPECT_NE(r.out.find("figure written to " + stem + ".png"), std::string::npos) << r.out;
-  std::filesystem::remove_all(dir);
 }
 
 // `run --model twod` reports the seeded wave's exact 2D theory beside its measurement, the same

@@ -5,7 +5,6 @@
 // case is listed with its command line. Each command runs under `timeout` so a hang is a failure
 // (exit 124) rather than a stuck suite.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -59,15 +59,15 @@ TEST(CliFuzz, EveryEndIsExitZeroTwoOrThree) {
   const char* cases = std::getenv("GRANBENCH_FUZZ_CASES");
   std::mt19937 rng(seed ? std::stoul(seed) : 20261201u);
   const int kCases = cases ? std::stoi(cases) : 200;
-  const std::string dir = "/tmp/gb_fuzz_" + std::to_string(getpid());
+  const granbench::testing::ScratchDir scratch("gb_fuzz");
+  const std::string dir = scratch.str();
   for (int n = 0; n < kCases; ++n) {
     const Command& c = kCommands[rng() % kCommands.size()];
     std::string args = c.base;
     const int changes = 1 + static_cast<int>(rng() % 3);
     for (int k = 0; k < changes; ++k)
       args += " " + c.options[rng() % c.options.size()] + " " + kValues[rng() % kValues.size()];
-    const auto r = run_granbench(args, "fuzz_" + std::to_string(getpid()),
-                                 "mkdir -p " + dir + " && cd " + dir + " && timeout -s KILL 60 ");
+    const auto r = run_granbench(args, "fuzz", "cd " + dir + " && timeout -s KILL 60 ");
     const bool allowed = r.code == 0 || r.code == 2 || r.code == 3;
     EXPECT_TRUE(allowed) << "case " << n << ": granbench " << args << "\nexit "
                          << (r.code < 0 ? std::string("by a signal") : std::to_string(r.code))
@@ -77,7 +77,6 @@ TEST(CliFuzz, EveryEndIsExitZeroTwoOrThree) {
       EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << args << "\n" << r.err;
     }
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

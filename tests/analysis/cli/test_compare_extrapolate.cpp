@@ -4,7 +4,6 @@
 // than the default grid's (1.0754 against 1.0891 over this shorter run; the half grid 1.056); on
 // two threads (the half grid beside the first 2D run) and on one (after it) alike.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,15 +12,17 @@
 
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 TEST(CompareExtrapolate, TheHalfGridTakesTheDeficitOutOfTheGrowthRate) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_cmp_extrap_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_cmp_extrap");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / "c.h5").string();
   const auto r = run_granbench(
       "compare --Lx 0.08 --t-end 0.8 --extrapolate --json --quiet "
@@ -51,7 +52,6 @@ TEST(CompareExtrapolate, TheHalfGridTakesTheDeficitOutOfTheGrowthRate) {
   const auto j1 = nlohmann::json::parse(r1.out);
   EXPECT_EQ(double(j1["twod"]["extrapolated"]["growth_rate"]), extrapolated);
   EXPECT_EQ(double(j1["twod"]["growth_rate"]), measured);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 // figure, and the physics of a wave that has grown out of the linear regime; bad input. The full
 // default case (label paper, not in CI) measures the paper's closing claim.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,6 +12,7 @@
 
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -24,10 +24,8 @@ const char* const kQuantities[] = {"amplitude", "max_slope", "front_width", "wav
                                    "mean_flux"};
 
 struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("gb_saturated_" + std::to_string(getpid()));
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() { fs::remove_all(dir); }
-  std::string file(const std::string& name) const { return (dir / name).string(); }
+  granbench::testing::ScratchDir dir{"gb_saturated"};
+  std::string file(const std::string& name) const { return dir / name; }
 };
 
 // Checks one model's JSON and HDF5 group; returns its JSON.
@@ -61,7 +59,7 @@ TEST(CompareSaturated, SmallCaseReportsBothWavesAlike) {
       "compare --saturated --Lx 0.04 --nx 40 --nz 16 --nx-depthavg 128 "
       "--t-end 1.5 --window 0.3 --threads 1 --json --quiet --out " +
           h5 + " --plot " + png,
-      "saturated_" + std::to_string(getpid()));
+      "saturated");
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["mode"], "saturated");
@@ -109,7 +107,7 @@ TEST(CompareSaturated, BadInputIsOneLineNamingTheOption) {
   for (const auto& [args, option] : cases) {
     const auto r = run_granbench(
         "compare --saturated --nx 24 --nz 12 --quiet --out " + s.file("bad.h5") + " " + args,
-        "saturated_bad_" + std::to_string(getpid()));
+        "saturated_bad");
     EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
     EXPECT_NE(r.err.find(option), std::string::npos) << args << "\n" << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;

@@ -6,22 +6,22 @@
 // conserve mass, and the depth-averaged wave is saturated over the measured window (amplitude
 // steady to 1 %). docs/paper-cases.md gives the measured numbers.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 TEST(PaperSaturatedWave, DepthAveragedFrontsAreMuchSteeper) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("gb_paper_saturated_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_paper_saturated");
+  const fs::path& dir = scratch.path();
   const auto r =
       run_granbench("compare --Lx 0.08 --saturated --threads 1 --json --quiet --out " +
                         (dir / "sat.h5").string() + " --plot " + (dir / "sat.png").string(),
@@ -38,7 +38,6 @@ TEST(PaperSaturatedWave, DepthAveragedFrontsAreMuchSteeper) {
   EXPECT_LT(d["amplitude_spread"].get<double>(), 0.01 * d["amplitude"].get<double>());
   EXPECT_GT(j["ratio"]["max_slope"].get<double>(), 2.0);
   EXPECT_LT(j["ratio"]["front_width"].get<double>(), 0.5);
-  fs::remove_all(dir);
 }
 
 }  // namespace

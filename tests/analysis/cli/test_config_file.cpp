@@ -4,7 +4,6 @@
 // top-level key of another subcommand does not break this one (K11); `case` takes --config
 // (K27); --print-config writes the effective options as TOML that --config reads back.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,30 +11,23 @@
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::CommandResult;
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 class ConfigFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("gb_config_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string file(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
+    const std::string path = dir_ / name;
     std::ofstream(path) << text;
     return path;
   }
-  CommandResult run(const std::string& args) {
-    return run_granbench(args, "config_" + std::to_string(getpid()));
-  }
+  CommandResult run(const std::string& args) { return run_granbench(args, "config"); }
   // Exit 2, one line, naming all of `parts`.
   void expect_refused(const std::string& args, const std::vector<std::string>& parts) {
     const auto r = run(args);
@@ -48,7 +40,8 @@ class ConfigFile : public ::testing::Test {
     EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
     return r.code == 0 ? nlohmann::json::parse(r.out)["angle"].get<double>() : -1.0;
   }
-  fs::path dir_;
+  const ScratchDir scratch_{"gb_config"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(ConfigFile, MalformedTomlIsRefusedNamingFileLineAndKey) {

@@ -18,6 +18,7 @@
 #include "common/hdf5_file.hpp"
 #include "common/steady_state.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 #include "twod/checkpoint.hpp"
 #include "twod/initial_state.hpp"
 #include "twod/solver.hpp"
@@ -30,19 +31,7 @@ const std::string kTwod = "run --model twod --nx 32 --nz 8 --Lx 0.04 --quiet ";
 const std::string kDepthavg = "run --model depthavg --nx 40 --quiet ";
 const std::string kCompare = "compare --nx 32 --nz 8 --nx-depthavg 40 --quiet ";
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "_" + std::to_string(getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    fs::permissions(path, fs::perms::owner_all, fs::perm_options::add);
-    fs::remove_all(path);
-  }
-  std::string operator/(const std::string& f) const { return (path / f).string(); }
-};
+using granbench::testing::ScratchDir;
 
 // A checkpoint at t = 0 of the 32 x 8 run of kTwod with the command line's default physics, the
 // velocity optionally poisoned.
@@ -80,15 +69,15 @@ TEST(FailurePolicy, OutputPathsAreCheckedBeforeAnyWork) {
 
 TEST(FailurePolicy, AReadOnlyOutputDirectoryIsRefusedWithPermissionDenied) {
   if (geteuid() == 0) GTEST_SKIP() << "root writes anywhere: no 'Permission denied' to test";
-  const TempDir dir("gb_fp_ro");
-  fs::permissions(dir.path, fs::perms::owner_read | fs::perms::owner_exec);
+  const ScratchDir dir("gb_fp_ro");
+  fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec);
   const auto r = run_granbench(kDepthavg + "--t-end 600 --out " + dir / "x.h5", "fp_ro");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("Permission denied"), std::string::npos) << r.err;
 }
 
 TEST(FailurePolicy, AnUnwritableCheckpointIsRefusedBeforeTheRun) {
-  const TempDir dir("gb_fp_ckpt");
+  const ScratchDir dir("gb_fp_ckpt");
   const auto r = run_granbench(
       kTwod + "--t-end 600 --out " + dir / "x.h5" + " --checkpoint /nonexistent-granbench-dir/c.h5",
       "fp_ckpt");
@@ -115,7 +104,7 @@ TEST(FailurePolicy, SampleAndSnapshotCountsAreBounded) {
 }
 
 TEST(FailurePolicy, AFailureInTheTimeLoopKeepsTheDataAndExitsThree) {
-  const TempDir dir("gb_fp_fail");
+  const ScratchDir dir("gb_fp_fail");
   write_default_checkpoint(dir / "nan.h5", true);
   const auto r = run_granbench(kTwod + "--twod-frame 0 --t-end 0.05 --json --restart " +
                                    dir / "nan.h5" + " --out " + dir / "x.h5",
@@ -130,7 +119,7 @@ TEST(FailurePolicy, AFailureInTheTimeLoopKeepsTheDataAndExitsThree) {
 }
 
 TEST(FailurePolicy, ARestartRefusesACheckpointOfOtherPhysics) {
-  const TempDir dir("gb_fp_phys");
+  const ScratchDir dir("gb_fp_phys");
   write_default_checkpoint(dir / "c.h5", false);
   const std::string restart = kTwod + "--t-end 0.02 --restart " + dir / "c.h5";
   // The checkpoint's grid is at rest (the lab frame); the default grid moves.
@@ -154,7 +143,7 @@ TEST(FailurePolicy, ARestartRefusesACheckpointOfOtherPhysics) {
 }
 
 TEST(FailurePolicy, SigtermKeepsWhatDepthavgComputed) {
-  const TempDir dir("gb_fp_term_d");
+  const ScratchDir dir("gb_fp_term_d");
   // 600 s of flow takes minutes: the SIGTERM after 3 s always arrives mid-run.
   const auto r = run_granbench(
       "run --model depthavg --nx 512 --quiet --json --t-end 600 --out " + dir / "d.h5", "fp_term_d",
@@ -166,7 +155,7 @@ TEST(FailurePolicy, SigtermKeepsWhatDepthavgComputed) {
 }
 
 TEST(FailurePolicy, SigtermKeepsWhatCompareComputed) {
-  const TempDir dir("gb_fp_term_c");
+  const ScratchDir dir("gb_fp_term_c");
   const auto r = run_granbench(
       kCompare + "--json --t-end 600 --out " + dir / "c.h5" + " --plot " + dir / "c.png",
       "fp_term_c", "timeout --preserve-status -s TERM 3 ");
@@ -177,12 +166,12 @@ TEST(FailurePolicy, SigtermKeepsWhatCompareComputed) {
 }
 
 TEST(FailurePolicy, SigtermStopsACaseInThisProcessAndKeepsItsRun) {
-  const TempDir dir("gb_fp_term_case");
+  const ScratchDir dir("gb_fp_term_case");
   std::ofstream(dir / "long.toml") << "kind = \"rollwave\"\nprobe_x = 0.01\n"
                                       "[run]\nnx = 32\nnz = 8\nLx = 0.04\nt-end = 600.0\n"
                                       "[smoke]\nprobe_window = [0.1, 0.2]\nfield_time = 0.2\n";
   const auto r = run_granbench("case long --resolution smoke --quiet --json --cases-dir " +
-                                   dir.path.string() + " --out-dir " + dir.path.string(),
+                                   dir.str() + " --out-dir " + dir.str(),
                                "fp_term_case", "timeout --preserve-status -s TERM 3 ");
   ASSERT_EQ(r.code, 143) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -200,7 +189,7 @@ TEST(FailurePolicy, ASteepValidFlowIsNotCalledDivergedAtItsFirstStep) {
 }
 
 TEST(FailurePolicy, CompareSaysNotAvailableWhereThereIsNoMeasurement) {
-  const TempDir dir("gb_fp_na");
+  const ScratchDir dir("gb_fp_na");
   const std::string cmd =
       kCompare + "--t-end 0.05 --dt-out 1 --out " + dir / "c.h5" + " --plot " + dir / "c.png";
   const auto text = run_granbench(cmd, "fp_na");

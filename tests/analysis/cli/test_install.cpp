@@ -2,22 +2,22 @@
 // its case files and plotting scripts under <prefix>/share/granbench (shipped_files.hpp), and
 // the build tree's command still finds them in the source tree.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_shell;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 TEST(Install, TheInstalledCommandFindsItsCasesAndPlotsUnderItsPrefix) {
-  const fs::path prefix =
-      fs::temp_directory_path() / ("granbench_install_" + std::to_string(getpid()));
-  fs::remove_all(prefix);
+  const ScratchDir scratch("granbench_install");
+  const fs::path& prefix = scratch.path();
   const auto installed = run_shell(std::string(GRANBENCH_CMAKE_COMMAND) + " --install " +
                                        GRANBENCH_BINARY_DIR + " --prefix " + prefix.string(),
                                    "install");
@@ -47,7 +47,6 @@ TEST(Install, TheInstalledCommandFindsItsCasesAndPlotsUnderItsPrefix) {
                               "install_plot");
   ASSERT_EQ(plot.code, 0) << plot.out << plot.err;
   EXPECT_TRUE(fs::exists(work / "d.png"));
-  fs::remove_all(prefix);
 }
 
 TEST(Install, TheBuildTreesCommandFindsThemInTheSourceTree) {

@@ -4,7 +4,6 @@
 // against the grid's expected deficit; a well-posed base state's 8 cm wave on the trusted grid
 // gets none. A 2D step above 1/2 on a sine start is named too (in process and end to end).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -14,6 +13,7 @@
 #include "analysis/cli/physics_warnings.hpp"
 #include "common/mu_curves.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace granbench;
 
@@ -129,8 +129,9 @@ TEST(PhysicsWarnings, AStepAboveOneHalfOnASineStartIsNamed) {
 
   // End to end: run's default start is the sine; compare's the eigenmode unless --init sine.
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("gb_large_step_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  using granbench::testing::ScratchDir;
+  const ScratchDir scratch("gb_large_step");
+  const fs::path& dir = scratch.path();
   const auto named = [&](const std::string& args) {
     const auto r = granbench::testing::run_granbench(
         args + " --quiet --out " + (dir / "out.h5").string(), "large_step");
@@ -144,5 +145,4 @@ TEST(PhysicsWarnings, AStepAboveOneHalfOnASineStartIsNamed) {
   EXPECT_FALSE(named(run + "--cfl 0.8 --init eigenmode"));
   EXPECT_TRUE(named(compare + "--cfl 0.8 --init sine"));
   EXPECT_FALSE(named(compare + "--cfl 0.8"));
-  fs::remove_all(dir);
 }

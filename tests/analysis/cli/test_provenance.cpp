@@ -5,7 +5,6 @@
 // every dataset. Each command's output is opened and checked; `--version` prints the version and
 // the commit.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <regex>
@@ -14,11 +13,13 @@
 #include "common/hdf5_file.hpp"
 #include "common/provenance.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 using namespace granbench;
 
 struct Case {
@@ -46,12 +47,11 @@ class Provenance : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
   const Case& c = GetParam();
-  const fs::path dir = fs::temp_directory_path() / ("gb_prov_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_prov");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / (c.file ? c.file : std::string(c.name) + ".h5")).string();
   const std::string where = c.file ? " --out-dir " + dir.string() : " --quiet --out " + out;
-  const auto r =
-      run_granbench(std::string(c.args) + " --json" + where, "prov_" + std::to_string(getpid()));
+  const auto r = run_granbench(std::string(c.args) + " --json" + where, "prov");
   ASSERT_EQ(r.code, 0) << c.args << "\n" << r.err;
   ASSERT_TRUE(fs::exists(out));
 
@@ -84,7 +84,6 @@ TEST_P(Provenance, EveryFileRecordsVersionCommandTimeInputsAndUnits) {
     EXPECT_TRUE(h5_has_attribute(out, set, "long_name"))
         << c.name << ": " << set << " has no long_name";
   }
-  fs::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
@@ -93,19 +92,17 @@ INSTANTIATE_TEST_SUITE_P(EachCommand, Provenance, ::testing::ValuesIn(kCases),
 // The 2D step's Courant number, new to compare (thirty-seventh session), reaches its 2D run and
 // is recorded with the inputs; above the VOF's 1/2, where the volume fractions sub-step.
 TEST(Provenance, CompareRecordsTheCourantNumberItWasGiven) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_prov_cfl_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_prov_cfl");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / "compare.h5").string();
   const std::string args = "compare --nx 16 --nz 8 --nx-depthavg 16 --t-end 1e-3 --cfl 0.8";
-  const auto r =
-      run_granbench(args + " --quiet --out " + out, "prov_cfl_" + std::to_string(getpid()));
+  const auto r = run_granbench(args + " --quiet --out " + out, "prov_cfl");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(h5_read_double_attribute(out, "/", "twod_cfl"), 0.8);
-  fs::remove_all(dir);
 }
 
 TEST(Version, PrintsTheVersionAndTheCommit) {
-  const auto r = run_granbench("--version", "version_" + std::to_string(getpid()));
+  const auto r = run_granbench("--version", "version");
   EXPECT_EQ(r.code, 0) << r.err;
   // the first line; then where it finds the files it ships (tests/analysis/cli/test_install.cpp)
   const std::string first = r.out.substr(0, r.out.find('\n') + 1);

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -28,12 +29,12 @@ void expect_same_to_1e9(const nlohmann::json& a, const nlohmann::json& b, const 
 // `granbench compare ARGS --json --quiet` with its files in a directory of its own (removed after
 // the run); the JSON, or an empty object (and a failure) if it did not exit 0.
 nlohmann::json compare_json(const std::string& args, const std::string& tag) {
-  const auto dir = std::filesystem::temp_directory_path() / ("granbench_" + tag);
-  std::filesystem::create_directories(dir);
-  const auto c = run_granbench("compare " + args + " --json --quiet --out " +
-                                   (dir / "c.h5").string() + " --plot " + (dir / "c.png").string(),
-                               tag);
-  std::filesystem::remove_all(dir);
+  const auto c = [&] {
+    const granbench::testing::ScratchDir dir("gb_" + tag);
+    return run_granbench("compare " + args + " --json --quiet --out " + (dir / "c.h5") +
+                             " --plot " + (dir / "c.png"),
+                         tag);
+  }();
   EXPECT_EQ(c.code, 0) << c.err;
   return c.code == 0 ? nlohmann::json::parse(c.out) : nlohmann::json::object();
 }

@@ -5,7 +5,6 @@
 // extrapolation is the deficit law's Richardson step on the pair, inside its bounds, nearer the
 // exact 2D theory than the run's own growth, and stored in the output file's results as printed.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -15,15 +14,17 @@
 #include "analysis/comparison/growth_deficit_law.hpp"
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 TEST(RunExtrapolate, TheHalfGridIsTheRunOnHalfTheCellsAndTakesTheDeficitOut) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_run_extrap_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_run_extrap");
+  const fs::path& dir = scratch.path();
   const std::string wave =
       "run --model twod --Lx 0.08 --init eigenmode --a0 1e-6 --t-end 0.8 "
       "--threads 2 --json --quiet";
@@ -61,7 +62,6 @@ TEST(RunExtrapolate, TheHalfGridIsTheRunOnHalfTheCellsAndTakesTheDeficitOut) {
   const auto p = nlohmann::json::parse(plain.out);
   EXPECT_TRUE(p["extrapolated"].is_null());
   EXPECT_EQ(double(p["growth_rate"]), measured);
-  fs::remove_all(dir);
 }
 
 }  // namespace

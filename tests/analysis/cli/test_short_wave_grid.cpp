@@ -5,7 +5,6 @@
 // further (up to four times the preset's cells across), and where even that is not enough `run`
 // warns. End to end: the grid is read back from each command's HDF5 output.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -14,19 +13,16 @@
 
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 class ShortWaveGrid : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("gb_short_wave_" + std::to_string(getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // The cell count that `args` (a command writing --out) records under `key` in its file's root.
   double recorded_cells(const std::string& args, const std::string& key) {
     const std::string out = (dir_ / "out.h5").string();
@@ -35,7 +31,8 @@ class ShortWaveGrid : public ::testing::Test {
     EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
     return granbench::h5_read_double_attribute(out, "/", key);
   }
-  fs::path dir_;
+  const ScratchDir scratch_{"gb_short_wave"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(ShortWaveGrid, RunRefinesAcrossTheLayerUnlessNzIsGiven) {

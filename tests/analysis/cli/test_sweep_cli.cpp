@@ -3,7 +3,6 @@
 // (exit 2, one line naming --out); under `mpirun -np 2` the ranks share the points and the result
 // equals the single-process run (skipped when the build has no MPI or mpirun is missing).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -21,10 +21,10 @@ using granbench::testing::run_granbench;
 // Cheap linear points: 64 cells, automatic run length.
 const std::string kSweep = "sweep --model depthavg --nx 64 --jobs 1 --json ";
 
+// The tests' files, in a directory of this process that goes when the tests end.
 std::string temp_file(const std::string& name) {
-  return (std::filesystem::temp_directory_path() /
-          ("gb_sweep_" + std::to_string(getpid()) + "_" + name))
-      .string();
+  static const granbench::testing::ScratchDir dir("gb_sweep_cli");
+  return dir / name;
 }
 
 // Points by Lx (rounded to micrometres).
@@ -35,7 +35,7 @@ std::map<long, nlohmann::json> by_Lx(const nlohmann::json& j) {
 }
 
 nlohmann::json sweep(const std::string& args, const std::string& launcher = "") {
-  const auto r = run_granbench(kSweep + args, "sweep_" + std::to_string(getpid()), launcher);
+  const auto r = run_granbench(kSweep + args, "sweep", launcher);
   EXPECT_EQ(r.code, 0) << r.err;
   return r.code == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
 }
@@ -61,7 +61,7 @@ TEST(SweepCli, ResumesFromTheOutputFileAndRunsOnlyTheNewPoints) {
   }
   // The same file with another grid: refused, not mixed in.
   const auto r = run_granbench("sweep --model depthavg --nx 96 --Lx 0.04:0.08:3 --out " + out,
-                               "sweep_refused_" + std::to_string(getpid()));
+                               "sweep_refused");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("linear_nx"), std::string::npos) << r.err;
@@ -79,7 +79,7 @@ TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
       "sweep --model both --Lx 0.08:0.08:1 --t-end 0.05 --resolution coarse "
       "--jobs 2 --quiet --out " +
       out;
-  const auto r = run_granbench(args + " --json", "sweep_reason_" + std::to_string(getpid()));
+  const auto r = run_granbench(args + " --json", "sweep_reason");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["points"].size(), 2u);
@@ -88,14 +88,13 @@ TEST(SweepCli, APointWithoutAGrowthRateSaysWhy) {
     ASSERT_TRUE(p["growth_reason"].is_string()) << p;
     EXPECT_NE(p["growth_reason"].get<std::string>().find("too short"), std::string::npos) << p;
   }
-  const auto table = run_granbench(args, "sweep_reason_table_" + std::to_string(getpid()));
+  const auto table = run_granbench(args, "sweep_reason_table");
   ASSERT_EQ(table.code, 0) << table.err;
   // (read back from the file this time)
   EXPECT_NE(table.out.find("twod at Lx = 0.08 m: growth not measured: too short"),
             std::string::npos)
       << table.out;
-  const auto again =
-      run_granbench(args + " --json", "sweep_reason_kept_" + std::to_string(getpid()));
+  const auto again = run_granbench(args + " --json", "sweep_reason_kept");
   ASSERT_EQ(again.code, 0) << again.err;
   for (const auto& p : nlohmann::json::parse(again.out)["points"]) {
     EXPECT_TRUE(p["resumed"].get<bool>()) << p;

@@ -11,41 +11,36 @@
 
 #include "common/output_lock.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using granbench::testing::ScratchDir;
 
 TEST(SweepOutput, ASecondWriterOfTheSameOutIsRefusedNamingTheLock) {
-  const fs::path dir = temp_dir("sweep_lock");
+  const ScratchDir scratch("gb_sweep_lock");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / "sweep.h5").string();
   {
     // This process stands for the first sweep: it holds the output as a running sweep does.
     const granbench::OutputLock first(out);
     const auto second = run_granbench(
         "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --json --out " + out,
-        "sweep_lock_" + std::to_string(getpid()));
+        "sweep_lock");
     EXPECT_EQ(second.code, 2) << second.err;
     EXPECT_NE(second.err.find(out + ".lock"), std::string::npos) << second.err;
     EXPECT_EQ(second.err.find('\n'), second.err.size() - 1) << "one line: " << second.err;
     EXPECT_FALSE(fs::exists(out)) << "the refused sweep wrote the file";
   }
   // Released: the same command now runs, and leaves no lock file behind.
-  const auto again =
-      run_granbench("sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --json --out " + out,
-                    "sweep_lock_" + std::to_string(getpid()));
+  const auto again = run_granbench(
+      "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --json --out " + out, "sweep_lock");
   EXPECT_EQ(again.code, 0) << again.err;
   EXPECT_TRUE(fs::exists(out));
   EXPECT_FALSE(fs::exists(out + ".lock"));
-  fs::remove_all(dir);
 }
 
 // An --out that cannot be written is refused before any point runs, with the OS's reason
@@ -56,7 +51,7 @@ TEST(SweepOutput, AnOutThatCannotBeWrittenIsRefusedFirst) {
       "sweep --model depthavg --nx 64 --jobs 1 --Lx 0.08:0.08:1 --quiet "
       "--out " +
           out,
-      "sweep_noout_" + std::to_string(getpid()));
+      "sweep_noout");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_EQ(r.err.rfind("granbench: error: --out: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("No such file or directory"), std::string::npos) << r.err;
@@ -64,20 +59,19 @@ TEST(SweepOutput, AnOutThatCannotBeWrittenIsRefusedFirst) {
 }
 
 TEST(SweepOutput, AnInterruptedSweepWithPlotButNoOutDoesNotClaimToKeepItsPoints) {
-  const fs::path dir = temp_dir("sweep_int");
+  const ScratchDir scratch("gb_sweep_int");
+  const fs::path& dir = scratch.path();
   // A 2D point of 60 s of flow takes minutes: the SIGINT after 3 s arrives mid-point.
   const auto r = run_granbench(
       "sweep --model twod --resolution coarse --Lx 0.08:0.08:1 --t-end 60"
       " --jobs 1 --quiet --plot sweep.png",
-      "sweep_int_" + std::to_string(getpid()),
-      "cd " + dir.string() + " && timeout --preserve-status -s INT 3 ");
+      "sweep_int", "cd " + dir.string() + " && timeout --preserve-status -s INT 3 ");
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("run the same command again"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("kept in"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("nothing is kept"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "sweep.png.data.h5")) << "the scratch file of the figure was left";
-  fs::remove_all(dir);
 }
 
 }  // namespace
@@ -87,15 +81,14 @@ namespace {
 // SIGTERM (a scheduler's or `timeout`'s stop) ends a sweep like Ctrl-C, with exit 143: before,
 // only SIGINT was caught and SIGTERM killed the process.
 TEST(SweepOutput, SigtermStopsASweepLikeCtrlCWithExit143) {
-  const fs::path dir = temp_dir("sweep_term");
+  const ScratchDir scratch("gb_sweep_term");
+  const fs::path& dir = scratch.path();
   const auto r = run_granbench(
       "sweep --model twod --resolution coarse --Lx 0.08:0.08:1 --t-end 60"
       " --jobs 1 --quiet --plot sweep.png",
-      "sweep_term_" + std::to_string(getpid()),
-      "cd " + dir.string() + " && timeout --preserve-status -s TERM 3 ");
+      "sweep_term", "cd " + dir.string() + " && timeout --preserve-status -s TERM 3 ");
   EXPECT_EQ(r.code, 143) << r.err;
   EXPECT_NE(r.err.find("interrupted"), std::string::npos) << r.err;
-  fs::remove_all(dir);
 }
 
 }  // namespace
@@ -106,7 +99,8 @@ namespace {
 // file while the first runs is refused with exit 2 naming the lock (issue: "a second process
 // writing the same sweep (or run) output is refused").
 TEST(SweepOutput, ASecondRunOnTheSameOutIsRefusedNamingTheLock) {
-  const fs::path dir = temp_dir("run_lock");
+  const ScratchDir scratch("gb_run_lock");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / "run.h5").string();
   const std::string pidfile = (dir / "pid").string();
   const std::string first =
@@ -114,16 +108,22 @@ TEST(SweepOutput, ASecondRunOnTheSameOutIsRefusedNamingTheLock) {
       "/granbench run --model twod --nx 64 --nz 16 --t-end 60 --quiet --out " + out +
       " >/dev/null 2>&1 & echo $! > " + pidfile;
   ASSERT_EQ(std::system(first.c_str()), 0);
+  // Stopped when the test ends, also when an ASSERT below returns early (before the directory
+  // holding its pid file goes).
+  struct StopFirstRun {
+    std::string pidfile;
+    ~StopFirstRun() {
+      std::system(("kill -TERM $(cat " + pidfile + ") 2>/dev/null; sleep 1").c_str());
+    }
+  } stop_first{pidfile};
   for (int i = 0; i < 100 && !fs::exists(out + ".lock"); ++i) usleep(100000);
   ASSERT_TRUE(fs::exists(out + ".lock")) << "the first run took no lock";
   for (const std::string model : {"twod", "depthavg"}) {
-    const auto r = run_granbench("run --model " + model + " --t-end 0.1 --quiet --out " + out,
-                                 "run_lock_" + std::to_string(getpid()));
+    const auto r =
+        run_granbench("run --model " + model + " --t-end 0.1 --quiet --out " + out, "run_lock");
     EXPECT_EQ(r.code, 2) << model << ": " << r.err;
     EXPECT_NE(r.err.find(out + ".lock"), std::string::npos) << r.err;
   }
-  std::system(("kill -TERM $(cat " + pidfile + ") 2>/dev/null; sleep 1").c_str());
-  fs::remove_all(dir);
 }
 
 }  // namespace

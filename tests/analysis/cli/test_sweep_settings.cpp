@@ -6,7 +6,6 @@
 // refused as not applying to that model; only the options listed in
 // sweep_options_without_effect_on_results() are exempt.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "analysis/cli/sweep_plan.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
@@ -144,9 +144,8 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
   spec.Lx = {0.08};
   spec.depthavg = false;
   spec.twod = true;
-  spec.out = (std::filesystem::temp_directory_path() /
-              ("gb_sweep_vp_" + std::to_string(::getpid()) + ".h5"))
-                 .string();
+  const granbench::testing::ScratchDir scratch("gb_sweep_vp");
+  spec.out = scratch / "sweep.h5";
   write_sweep(spec.out, spec, {});
   EXPECT_NO_THROW(check_stored_settings(spec.out, spec));
   spec.twod_settings.viscosity_passes = 2;
@@ -156,7 +155,6 @@ TEST(SweepSettings, AResumeWithOtherViscosityPassesIsRefused) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("twod_viscosity_passes"), std::string::npos) << e.what();
   }
-  std::filesystem::remove(spec.out);
 }
 
 // The 2D points' physics warnings (physics_warnings.hpp) come with the plan. A sweep that reaches

@@ -3,7 +3,6 @@
 // writes a checkpoint and exits with code 130; `--restart` continues from the checkpoint to the
 // end time with the granular volume conserved.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -11,24 +10,24 @@
 #include <string>
 
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 const std::string kRun = "run --model twod --nx 64 --nz 16 --Lx 0.08 --json --quiet ";
 }  // namespace
 
 TEST(TwoDInterrupt, CtrlCKeepsTheOutputWritesACheckpointAndTheRunRestarts) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_twod_int_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_twod_int");
+  const fs::path& dir = scratch.path();
   const std::string out = (dir / "run.h5").string(), checkpoint = (dir / "run.ckpt.h5").string();
 
   // 60 s of flow would take minutes: the SIGINT after 3 s always arrives mid-run.
-  const auto first =
-      run_granbench(kRun + "--t-end 60 --out " + out + " --checkpoint " + checkpoint,
-                    "twod_int_" + std::to_string(getpid()), "timeout --preserve-status -s INT 3 ");
+  const auto first = run_granbench(kRun + "--t-end 60 --out " + out + " --checkpoint " + checkpoint,
+                                   "twod_int", "timeout --preserve-status -s INT 3 ");
   ASSERT_EQ(first.code, 130) << first.err;
   EXPECT_NE(first.err.find("interrupted at t ="), std::string::npos) << first.err;
   const auto j = nlohmann::json::parse(first.out);
@@ -43,7 +42,7 @@ TEST(TwoDInterrupt, CtrlCKeepsTheOutputWritesACheckpointAndTheRunRestarts) {
   const double t_end = std::ceil((t_stop + 0.05) * 1000.0) / 1000.0;  // exact in to_string
   const auto second = run_granbench(kRun + "--t-end " + std::to_string(t_end) + " --restart " +
                                         checkpoint + " --out " + (dir / "rest.h5").string(),
-                                    "twod_rest_" + std::to_string(getpid()));
+                                    "twod_rest");
   ASSERT_EQ(second.code, 0) << second.err;
   const auto k = nlohmann::json::parse(second.out);
   EXPECT_EQ(k["status"], "completed");
@@ -54,5 +53,4 @@ TEST(TwoDInterrupt, CtrlCKeepsTheOutputWritesACheckpointAndTheRunRestarts) {
   // (before and after the open top's pressure fix of 3 December), and where the interrupt lands
   // depends on the machine's speed. A restart that lost or doubled one cell would be off by 2e-3.
   EXPECT_LT(std::abs(k["mass_error"].get<double>()), 1e-11);
-  fs::remove_all(dir);
 }

@@ -20,10 +20,12 @@
 
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 const std::string kRun =
     "run --model twod --nx 32 --nz 8 --Lx 0.04 --a0 1e-5 --t-end 4 --dt-snapshot 0.3 "
@@ -51,9 +53,8 @@ std::size_t count(const std::string& file, const std::string& what) {
 }  // namespace
 
 TEST(TwodSigkill, ARunKilledAfterACheckpointRestartsIntoTheSameOutAsIfUninterrupted) {
-  const fs::path dir = fs::temp_directory_path() / ("gb_sigkill_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const ScratchDir scratch("gb_sigkill");
+  const fs::path& dir = scratch.path();
   const std::string ref = (dir / "ref.h5").string(), out = (dir / "run.h5").string();
   const std::string checkpoint = (dir / "run.checkpoint.h5").string();
 
@@ -119,5 +120,4 @@ TEST(TwodSigkill, ARunKilledAfterACheckpointRestartsIntoTheSameOutAsIfUninterrup
   const auto ja = nlohmann::json::parse(full.out), jb = nlohmann::json::parse(rest.out);
   ASSERT_FALSE(ja["growth_rate"].is_null()) << ja["reason"];
   EXPECT_NEAR(ja["growth_rate"].get<double>(), jb["growth_rate"].get<double>(), 1e-12);
-  fs::remove_all(dir);
 }

@@ -4,7 +4,6 @@
 // cannot open (white space) refused before the run. With pvpython installed, the file is also
 // opened with each of ParaView's three XDMF readers (skipped otherwise).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -16,11 +15,13 @@
 
 #include "common/hdf5_file.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 
 using granbench::testing::run_granbench;
 namespace fs = std::filesystem;
+using granbench::testing::ScratchDir;
 
 const std::string kRun =
     "run --model twod --nx 40 --nz 16 --t-end 0.02 --dt-snapshot 0.01 --quiet --out ";
@@ -34,18 +35,13 @@ std::string read(const fs::path& p) {
 
 class XdmfOutput : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("gb_xdmf_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const ScratchDir scratch_{"gb_xdmf"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(XdmfOutput, StructuredMeshVelocityVectorAndExactTimes) {
   const std::string h5 = (dir_ / "run.h5").string();
-  const auto r = run_granbench(kRun + h5, "xdmf_" + std::to_string(getpid()));
+  const auto r = run_granbench(kRun + h5, "xdmf");
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string x = read(dir_ / "run.xdmf");
   EXPECT_EQ(x.find("2DRectMesh"), std::string::npos);
@@ -101,14 +97,14 @@ TEST_F(XdmfOutput, StructuredMeshVelocityVectorAndExactTimes) {
 
 TEST_F(XdmfOutput, FileNamesAreEscapedOrRefused) {
   const std::string amp = (dir_ / "a&b.h5").string();
-  const auto ok = run_granbench(kRun + "'" + amp + "'", "xdmf_" + std::to_string(getpid()));
+  const auto ok = run_granbench(kRun + "'" + amp + "'", "xdmf");
   ASSERT_EQ(ok.code, 0) << ok.err;
   const std::string x = read(dir_ / "a&b.xdmf");
   EXPECT_NE(x.find(">a&amp;b.h5:/snapshots/"), std::string::npos) << x;
   EXPECT_EQ(x.find(">a&b.h5"), std::string::npos);
 
   const std::string spaced = (dir_ / "my run.h5").string();
-  const auto bad = run_granbench(kRun + "'" + spaced + "'", "xdmf_" + std::to_string(getpid()));
+  const auto bad = run_granbench(kRun + "'" + spaced + "'", "xdmf");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("--out"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("white space"), std::string::npos) << bad.err;
@@ -120,7 +116,7 @@ TEST_F(XdmfOutput, FileNamesAreEscapedOrRefused) {
 TEST_F(XdmfOutput, EveryParaViewReaderOpensIt) {
   if (std::system("command -v pvpython >/dev/null 2>&1") != 0) GTEST_SKIP() << "no pvpython";
   const std::string h5 = (dir_ / "run.h5").string();
-  ASSERT_EQ(run_granbench(kRun + h5, "xdmf_" + std::to_string(getpid())).code, 0);
+  ASSERT_EQ(run_granbench(kRun + h5, "xdmf").code, 0);
   const std::string script = GRANBENCH_SOURCE_DIR "/tests/analysis/cli/open_xdmf.py";
   const std::string xvfb =
       std::system("command -v xvfb-run >/dev/null 2>&1") == 0 ? "xvfb-run -a " : "";

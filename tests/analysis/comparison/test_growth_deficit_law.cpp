@@ -3,13 +3,13 @@
 // for a pair that cannot be extrapolated; and on the solver, a sweep point whose extrapolation
 // lands nearer the exact 2D theory than its own grid, the half grid stored beside it.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 
 #include "analysis/comparison/growth_deficit_law.hpp"
 #include "analysis/comparison/sweep.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace granbench;
 
@@ -65,9 +65,8 @@ TEST(GrowthDeficitLaw, ASweepPointExtrapolatedComesNearerTheTheory) {
   spec.twod_settings.nx = 160;
   spec.twod_settings.nz = 64;
   spec.jobs = 1;
-  spec.out = (std::filesystem::temp_directory_path() /
-              ("gb_sweep_extrapolate_" + std::to_string(::getpid()) + ".h5"))
-                 .string();
+  const granbench::testing::ScratchDir scratch("gb_sweep_extrapolate");
+  spec.out = scratch / "sweep.h5";
   const auto points = run_sweep(spec);
   ASSERT_EQ(points.size(), 1u);
   const SweepPoint& p = points[0];
@@ -88,5 +87,4 @@ TEST(GrowthDeficitLaw, ASweepPointExtrapolatedComesNearerTheTheory) {
   EXPECT_EQ(p.cells_z, 64.0);
   EXPECT_EQ(stored[0].cells_x, 160.0);
   EXPECT_EQ(stored[0].cells_z, 64.0);
-  std::filesystem::remove(spec.out);
 }

@@ -2,12 +2,12 @@
 // that the ranks of a killed multi-process run left in their part files; a stored sweep with
 // other settings is refused; points survive packing for the trip between processes.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 
 #include "analysis/comparison/sweep.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 using namespace granbench;
 
@@ -22,8 +22,8 @@ TEST(Sweep, ParsesRangesAndRejectsBadOnes) {
 }
 
 TEST(Sweep, ResumesFromTheOutputFile) {
-  const std::string path = std::filesystem::temp_directory_path() / "granbench_sweep_resume.h5";
-  std::filesystem::remove(path);
+  const granbench::testing::ScratchDir scratch("gb_sweep_resume");
+  const std::string path = scratch / "sweep.h5";
   SweepSpec spec;
   spec.chute.t_end = 0.3;
   spec.depthavg_settings.nx = 64;
@@ -48,7 +48,6 @@ TEST(Sweep, ResumesFromTheOutputFile) {
   ASSERT_FALSE(first[0].run_command.empty());
   EXPECT_EQ(second[0].run_command, first[0].run_command);
   EXPECT_EQ(second[2].run_command, first[1].run_command);
-  std::filesystem::remove(path);
 }
 
 namespace {
@@ -66,8 +65,8 @@ SweepSpec linear_spec(const std::string& out) {
 }  // namespace
 
 TEST(Sweep, ResumesFromThePartFilesOfAKilledMultiProcessRun) {
-  const std::string path = std::filesystem::temp_directory_path() / "granbench_sweep_parts.h5";
-  std::filesystem::remove(path);
+  const granbench::testing::ScratchDir scratch("gb_sweep_parts");
+  const std::string path = scratch / "sweep.h5";
   // Rank 1 of 2 finished its share (point 1, Lx = 0.06) and the run was killed before the end.
   SweepSpec rank1 = linear_spec(path);
   rank1.rank = 1;
@@ -95,7 +94,6 @@ TEST(Sweep, ResumesFromThePartFilesOfAKilledMultiProcessRun) {
   SweepSpec other = linear_spec(path);
   other.depthavg_linear->nx = 96;
   EXPECT_THROW(read_finished(other), std::invalid_argument);
-  std::filesystem::remove(path);
 }
 
 namespace {
@@ -148,9 +146,8 @@ TEST(Sweep, PointsAndTheirReasonsSurvivePacking) {
 }
 
 TEST(Sweep, PointsAndTheirReasonsSurviveTheFile) {
-  const std::string path = std::filesystem::temp_directory_path() /
-                           ("granbench_sweep_reasons_" + std::to_string(getpid()) + ".h5");
+  const granbench::testing::ScratchDir scratch("gb_sweep_reasons");
+  const std::string path = scratch / "sweep.h5";
   write_sweep(path, linear_spec(path), two_points());
   expect_two_points(read_sweep(path));
-  std::filesystem::remove(path);
 }

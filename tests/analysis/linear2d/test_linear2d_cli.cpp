@@ -10,6 +10,7 @@
 
 #include "analysis/linear2d/linear_stability_2d.hpp"
 #include "tests/support/run_granbench.hpp"
+#include "tests/support/scratch_dir.hpp"
 
 namespace {
 granbench::testing::CommandResult run(const std::string& args) {
@@ -56,9 +57,9 @@ TEST(Linear2DCli, IllPosedBaseStateIsReported) {
 }
 
 TEST(Linear2DCli, BadResolutionIsRejectedWithoutOutput) {
-  const auto out = std::filesystem::temp_directory_path() / "granbench_linear2d_bad.h5";
-  std::filesystem::remove(out);
-  const auto r = run("dispersion --theory twod --Lx 0.08 --chebyshev 4 --out " + out.string());
+  const granbench::testing::ScratchDir dir("gb_linear2d_bad");
+  const std::string out = dir / "out.h5";
+  const auto r = run("dispersion --theory twod --Lx 0.08 --chebyshev 4 --out " + out);
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--chebyshev"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[8, 160]"), std::string::npos) << r.err;

@@ -116,6 +116,13 @@ void ViscousOperator::set(const Properties& props, double dt) {
 
 void ViscousOperator::set_stress(const std::vector<double>& eta_c,
                                  const std::vector<double>& eta_n) {
+  set_stress_weights(eta_c, eta_n);
+  std::fill(mass_u_.begin(), mass_u_.end(), 0.0);
+  std::fill(mass_w_.begin(), mass_w_.end(), 0.0);
+}
+
+void ViscousOperator::set_stress_weights(const std::vector<double>& eta_c,
+                                         const std::vector<double>& eta_n) {
   // Column by column (i nz + k for cells and u, i (nz + 1) + k for corners), so that the loops
   // along a line read contiguous memory.
   const double V = g_.cell_volume();
@@ -127,15 +134,14 @@ void ViscousOperator::set_stress(const std::vector<double>& eta_c,
       kn_[i * (nz + 1) + k] = eta_n[c] * V;
     }
   });
-  std::fill(mass_u_.begin(), mass_u_.end(), 0.0);
-  std::fill(mass_w_.begin(), mass_w_.end(), 0.0);
 }
 
 void ViscousOperator::set(const Properties& props, const std::vector<double>& eta_c,
                           const std::vector<double>& eta_n, double dt) {
-  set_stress(eta_c, eta_n);
+  set_stress_weights(eta_c, eta_n);
   const double V_dt = g_.cell_volume() / dt;
   const int nx = g_.nx, nz = g_.nz;
+  // (every entry that a row reads is written here: no zeroing first)
   parallel_for(nx, true, [&](int i) {
     for (int k = 0; k < nz; ++k) {
       const std::size_t c = g_.at(i, k);

@@ -42,6 +42,8 @@ class ViscousOperator {
   void assemble(PatternedMatrix& A) const;
 
  private:
+  // The stress weights kc_, kn_ from the viscosities (set and set_stress).
+  void set_stress_weights(const std::vector<double>& eta_c, const std::vector<double>& eta_n);
   // Where a matrix entry sits relative to its row's line: the diagonal, the line neighbour
   // below or above, or outside the line.
   enum class Entry { Diag, Lower, Upper, Off };

@@ -30,8 +30,11 @@
 namespace granbench::twod {
 
 namespace {
+// (both sides computed, then one chosen: a loop of these has no branches and vectorises; the
+// unchosen quotient may be 0/0, which is never used)
 double van_leer(double a, double b) {
-  return a * b > 0.0 ? 2.0 * a * b / (a + b) : 0.0;
+  const double mean = 2.0 * a * b / (a + b);
+  return a * b > 0.0 ? mean : 0.0;
 }
 
 // Upwind-reconstructed face value between q1 (behind) and q2 (ahead) for velocity V, with q0
@@ -41,8 +44,9 @@ double van_leer(double a, double b) {
 // Euler's anti-diffusion (U^2 dt/2) d2/dx2.
 double upwind(double V, double q0, double q1, double q2, double q3, double c = 0.0) {
   const double half = 0.5 * (1.0 - c);
-  if (V >= 0.0) return q1 + half * van_leer(q1 - q0, q2 - q1);
-  return q2 - half * van_leer(q2 - q1, q3 - q2);
+  const double from_behind = q1 + half * van_leer(q1 - q0, q2 - q1);
+  const double from_ahead = q2 - half * van_leer(q2 - q1, q3 - q2);
+  return V >= 0.0 ? from_behind : from_ahead;
 }
 
 // What enters a control volume per unit area and time through its two faces along one
@@ -73,8 +77,8 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
                     const CarriedField& carried, bool transverse_terms) {
   // Courant numbers of the time-centred face values (0: the plain upwind slope)
   const double cxr = dt_centre / g.dx, czr = dt_centre / g.dz;
-  auto cx_of = [&](double V) { return std::abs(V) * cxr; };
-  auto cz_of = [&](double V) { return std::abs(V) * czr; };
+  auto cx_of = [=](double V) { return std::abs(V) * cxr; };
+  auto cz_of = [=](double V) { return std::abs(V) * czr; };
   const int nx = g.nx, nz = g.nz;
   const auto &u = s.u, &w = s.w;
   // The transverse terms: half a step of the transport along the face, -(dt/2) V_t dq/dt_t, with
@@ -84,14 +88,16 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
   // rollwave; rows clamped at the bed and top).
   const double half_dt = transverse_terms ? 0.5 * dt_centre : 0.0;
   const double idx_t = 1.0 / g.dx, idz_t = 1.0 / g.dz;
-  auto donor = [](double V, double behind, double here, double ahead, double inv_h) {
-    return (V >= 0.0 ? here - behind : ahead - here) * inv_h;
+  auto donor = [](double V, double behind, double here, double ahead, double inv_h)
+      __attribute__((always_inline)) {
+    const double back = here - behind, forward = ahead - here;
+    return (V >= 0.0 ? back : forward) * inv_h;
   };
   // the term for field Q at (i, k), transported by Vt along z or along x
-  auto along_z = [&](auto&& Q, int i, int k, double Vt) {
+  auto along_z = [=](auto&& Q, int i, int k, double Vt) __attribute__((always_inline)) {
     return half_dt * Vt * donor(Vt, Q(i, k - 1), Q(i, k), Q(i, k + 1), idz_t);
   };
-  auto along_x = [&](auto&& Q, int i, int k, double Vt) {
+  auto along_x = [=](auto&& Q, int i, int k, double Vt) __attribute__((always_inline)) {
     return half_dt * Vt * donor(Vt, Q(i - 1, k), Q(i, k), Q(i + 1, k), idx_t);
   };
   // (for Carry = false the carried field's accessors read u and w and are never used)
@@ -111,12 +117,26 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     for (auto* v : {&faces.ux_p, &faces.wz_p}) v->resize(g.cells());
     for (auto* v : {&faces.uz_p, &faces.wx_p}) v->resize(g.w_faces());
   }
+  // The face arrays as pointers: loaded once, not through `faces` at every face (which kept
+  // the face loops from vectorising).
+  double *const ux_c = faces.ux_c.data(), *const ux_f = faces.ux_f.data(),
+                *const uz_c = faces.uz_c.data(), *const uz_f = faces.uz_f.data(),
+                *const wx_c = faces.wx_c.data(), *const wx_f = faces.wx_f.data(),
+                *const wz_c = faces.wz_c.data(), *const wz_f = faces.wz_f.data();
+  double *const ux_p = Carry ? faces.ux_p.data() : nullptr,
+                *const uz_p = Carry ? faces.uz_p.data() : nullptr,
+                *const wx_p = Carry ? faces.wx_p.data() : nullptr,
+                *const wz_p = Carry ? faces.wz_p.data() : nullptr;
   // Accessors: q(i, k) for the u-rows (clamped to 0..nz-1) and the w-rows (0..nz), periodic in i.
   auto wrapped = [&](const std::vector<double>& q, int top) {
-    return [&q, &g, top](int i, int k) { return q[g.at(i, std::clamp(k, 0, top))]; };
+    return [ q = q.data(), &g, top ](int i, int k) __attribute__((always_inline)) {
+      return q[g.at(i, std::clamp(k, 0, top))];
+    };
   };
   auto direct = [nx](const std::vector<double>& q) {
-    return [&q, nx](int i, int k) { return q[std::size_t(k) * nx + i]; };
+    return [ q = q.data(), nx ](int i, int k) __attribute__((always_inline)) {
+      return q[std::size_t(k) * nx + i];
+    };
   };
   // Row k of faces: `body(i, k, U, W, PU, PW, CX, CZ)` (PU, PW: the carried field) with direct
   // reads for i in [2, nx - 2) when `inside` (the stencil stays within the rows), wrapped and
@@ -131,90 +151,112 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     const auto Ud = direct(u), Wd = direct(w), PUd = direct(pu), PWd = direct(pw), CXd = direct(cx),
                CZd = direct(cz);
     for (int i = 0; i < 2; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
-    for (int i = 2; i < nx - 2; ++i) body(i, k, Ud, Wd, PUd, PWd, CXd, CZd);
+    // Vectorised: each face writes only its own entries and reads only the inputs, and its
+    // branches are selections between values both computed, so every lane does the scalar
+    // arithmetic and the results are bitwise those of the scalar loop. (`local`: a copy of the
+    // body whose captures the compiler can keep in registers across the loop.)
+    const auto local = body;
+#pragma omp simd
+    for (int i = 2; i < nx - 2; ++i) local(i, k, Ud, Wd, PUd, PWd, CXd, CZd);
     for (int i = nx - 2; i < nx; ++i) body(i, k, Uw, Ww, PUw, PWw, CXw, CZw);
   };
   // The u-volumes' x-face at cell centre (i, k), between u-faces i and i + 1.
-  auto u_x_face = [&](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&& CX, auto&&) {
+  auto u_x_face = [=](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k) + U(i + 1, k)), C = 0.5 * (CX(i, k) + CX(i + 1, k));
     const std::size_t f = std::size_t(k) * nx + i;
-    faces.ux_c[f] = C;
+    ux_c[f] = C;
     double tq = 0.0, tp = 0.0;
-    if (half_dt > 0.0) {
-      const int iu = V >= 0.0 ? i : i + 1;
-      const double Wt = 0.25 * (W(iu - 1, k) + W(iu, k) + W(iu - 1, k + 1) + W(iu, k + 1));
-      tq = along_z(U, iu, k, Wt);
-      if constexpr (Carry) tp = along_z(PU, iu, k, Wt);
+    if (half_dt > 0.0) {  // at the upwind u-face, i or i + 1 (both evaluated, one chosen)
+      auto Wt = [&](int iu) {
+        return 0.25 * (W(iu - 1, k) + W(iu, k) + W(iu - 1, k + 1) + W(iu, k + 1));
+      };
+      const double Wl = Wt(i), Wr = Wt(i + 1);
+      const double tq_l = along_z(U, i, k, Wl), tq_r = along_z(U, i + 1, k, Wr);
+      tq = V >= 0.0 ? tq_l : tq_r;
+      if constexpr (Carry) {
+        const double tp_l = along_z(PU, i, k, Wl), tp_r = along_z(PU, i + 1, k, Wr);
+        tp = V >= 0.0 ? tp_l : tp_r;
+      }
     }
-    faces.ux_f[f] = C * (upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
+    ux_f[f] = C * (upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      faces.ux_p[f] =
-          C * (upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V)) - tp);
+      ux_p[f] = C * (upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V)) - tp);
   };
-  // The u-volumes' z-face at corner (i, k), k = 0 .. nz: none through the bed; at the top q is
-  // extended with zero gradient.
-  auto u_z_face = [&](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&&, auto&& CZ) {
+  // The u-volumes' z-face at corner (i, k), k = 1 .. nz (none through the bed, k = 0: below); at
+  // the top q is extended with zero gradient.
+  auto u_z_face = [=](int i, int k, auto&& U, auto&& W, auto&& PU, auto&&, auto&&, auto&& CZ) {
     const std::size_t f = std::size_t(k) * nx + i;
-    if (k == 0) {
-      faces.uz_c[f] = 0.0;
-      faces.uz_f[f] = 0.0;
-      if constexpr (Carry) faces.uz_p[f] = 0.0;
-      return;
-    }
     const double V = 0.5 * (W(i - 1, k) + W(i, k)), C = 0.5 * (CZ(i - 1, k) + CZ(i, k));
     auto face_value = [&](auto&& Q) {
       return k == nz ? Q(i, k - 1)
                      : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
     };
     double tq = 0.0, tp = 0.0;
-    if (half_dt > 0.0 && k < nz) {
-      const int ku = V >= 0.0 ? k - 1 : k;
-      const double Ut = U(i, ku);
-      tq = along_x(U, i, ku, Ut);
-      if constexpr (Carry) tp = along_x(PU, i, ku, Ut);
+    if (half_dt > 0.0 && k < nz) {  // at the upwind u-row, k - 1 or k (both, one chosen)
+      const double Ub = U(i, k - 1), Ua = U(i, k);
+      const double tq_b = along_x(U, i, k - 1, Ub), tq_a = along_x(U, i, k, Ua);
+      tq = V >= 0.0 ? tq_b : tq_a;
+      if constexpr (Carry) {
+        const double tp_b = along_x(PU, i, k - 1, Ub), tp_a = along_x(PU, i, k, Ua);
+        tp = V >= 0.0 ? tp_b : tp_a;
+      }
     }
-    faces.uz_c[f] = C;
-    faces.uz_f[f] = C * (face_value(U) - tq);
-    if constexpr (Carry) faces.uz_p[f] = C * (face_value(PU) - tp);
+    uz_c[f] = C;
+    uz_f[f] = C * (face_value(U) - tq);
+    if constexpr (Carry) uz_p[f] = C * (face_value(PU) - tp);
   };
   // The w-volumes' x-face at corner (i, k), k = 1 .. nz - 1.
-  auto w_x_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&& CX, auto&&) {
+  auto w_x_face = [=](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&& CX, auto&&) {
     const double V = 0.5 * (U(i, k - 1) + U(i, k)), C = 0.5 * (CX(i, k - 1) + CX(i, k));
     const std::size_t f = std::size_t(k) * nx + i;
-    faces.wx_c[f] = C;
+    wx_c[f] = C;
     double tq = 0.0, tp = 0.0;
-    if (half_dt > 0.0) {
-      const int iu = V >= 0.0 ? i - 1 : i;
-      const double Wt = W(iu, k);
-      tq = along_z(W, iu, k, Wt);
-      if constexpr (Carry) tp = along_z(PW, iu, k, Wt);
+    if (half_dt > 0.0) {  // at the upwind w-face, i - 1 or i (both evaluated, one chosen)
+      const double Wl = W(i - 1, k), Wr = W(i, k);
+      const double tq_l = along_z(W, i - 1, k, Wl), tq_r = along_z(W, i, k, Wr);
+      tq = V >= 0.0 ? tq_l : tq_r;
+      if constexpr (Carry) {
+        const double tp_l = along_z(PW, i - 1, k, Wl), tp_r = along_z(PW, i, k, Wr);
+        tp = V >= 0.0 ? tp_l : tp_r;
+      }
     }
-    faces.wx_f[f] = C * (upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
+    wx_f[f] = C * (upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      faces.wx_p[f] =
-          C * (upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V)) - tp);
+      wx_p[f] = C * (upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V)) - tp);
   };
   // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
-  auto w_z_face = [&](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
+  auto w_z_face = [=](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
     const double V = 0.5 * (W(i, k) + W(i, k + 1)), C = 0.5 * (CZ(i, k) + CZ(i, k + 1));
     const std::size_t f = std::size_t(k) * nx + i;
-    faces.wz_c[f] = C;
+    wz_c[f] = C;
     double tq = 0.0, tp = 0.0;
-    if (half_dt > 0.0) {
-      const int ku = V >= 0.0 ? k : k + 1;
-      const double Ut = 0.25 * (U(i, ku - 1) + U(i + 1, ku - 1) + U(i, ku) + U(i + 1, ku));
-      tq = along_x(W, i, ku, Ut);
-      if constexpr (Carry) tp = along_x(PW, i, ku, Ut);
+    if (half_dt > 0.0) {  // at the upwind w-face, k or k + 1 (both evaluated, one chosen)
+      auto Ut = [&](int ku) {
+        return 0.25 * (U(i, ku - 1) + U(i + 1, ku - 1) + U(i, ku) + U(i + 1, ku));
+      };
+      const double Ub = Ut(k), Ua = Ut(k + 1);
+      const double tq_b = along_x(W, i, k, Ub), tq_a = along_x(W, i, k + 1, Ua);
+      tq = V >= 0.0 ? tq_b : tq_a;
+      if constexpr (Carry) {
+        const double tp_b = along_x(PW, i, k, Ub), tp_a = along_x(PW, i, k + 1, Ua);
+        tp = V >= 0.0 ? tp_b : tp_a;
+      }
     }
-    faces.wz_f[f] = C * (upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
+    wz_f[f] = C * (upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
     if constexpr (Carry)
-      faces.wz_p[f] =
-          C * (upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
+      wz_p[f] = C * (upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
   parallel_for(nz + 1, true, [&](int k) {
     if (k < nz) row(u_x_face, k, k >= 1 && k + 1 < nz);  // (the transverse reads k +- 1)
-    row(u_z_face, k, k >= 2 && k + 1 <= nz - 1);
+    if (k > 0) {
+      row(u_z_face, k, k >= 2 && k + 1 <= nz - 1);
+    } else {
+      for (int i = 0; i < nx; ++i) {
+        uz_c[i] = uz_f[i] = 0.0;
+        if constexpr (Carry) uz_p[i] = 0.0;
+      }
+    }
     if (k > 0 && k < nz) row(w_x_face, k, true);
     if (k < nz) row(w_z_face, k, k >= 1 && k + 2 <= nz);
   });
@@ -235,30 +277,37 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     const double flux = (Fr - Fl) * idx + (Ft - Fb) * idz;
     return (flux - q * b.div) / b.norm;
   };
+  // Volume c from its faces, with l (u) or r (w) the index of its neighbour along x: the first u-
+  // and the last w-volume of a row take theirs across the periodic end, on their own; the others
+  // run in a loop that vectorises (`omp simd`, as the faces above).
+  double *const adv_u_p = adv_u.data(), *const adv_w_p = adv_w.data();
+  double* const carried_u_p = Carry ? carried.adv_u->data() : nullptr;
+  double* const carried_w_p = Carry ? carried.adv_w->data() : nullptr;
+  const double *const u_p = u.data(), *const w_p = w.data(), *const pu_p = pu.data(),
+                      *const pw_p = pw.data();
+  auto u_volume = [&](std::size_t c, std::size_t l) __attribute__((always_inline)) {
+    const Balance b = balance(ux_c[l], ux_c[c], uz_c[c], uz_c[c + nx], c, norm_u);
+    adv_u_p[c] = value(b, ux_f[l], ux_f[c], uz_f[c], uz_f[c + nx], u_p[c]);
+    if constexpr (Carry)
+      carried_u_p[c] = value(b, ux_p[l], ux_p[c], uz_p[c], uz_p[c + nx], pu_p[c]);
+  };
+  auto w_volume = [&](std::size_t c, std::size_t r) __attribute__((always_inline)) {
+    const Balance b = balance(wx_c[c], wx_c[r], wz_c[c - nx], wz_c[c], c, norm_w);
+    adv_w_p[c] = value(b, wx_f[c], wx_f[r], wz_f[c - nx], wz_f[c], w_p[c]);
+    if constexpr (Carry)
+      carried_w_p[c] = value(b, wx_p[c], wx_p[r], wz_p[c - nx], wz_p[c], pw_p[c]);
+  };
   parallel_for(nz, true, [&](int k) {
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t c = std::size_t(k) * nx + i,
-                        l = std::size_t(k) * nx + (i == 0 ? nx - 1 : i - 1);
-      const Balance b =
-          balance(faces.ux_c[l], faces.ux_c[c], faces.uz_c[c], faces.uz_c[c + nx], c, norm_u);
-      adv_u[c] = value(b, faces.ux_f[l], faces.ux_f[c], faces.uz_f[c], faces.uz_f[c + nx], u[c]);
-      if constexpr (Carry)
-        (*carried.adv_u)[c] =
-            value(b, faces.ux_p[l], faces.ux_p[c], faces.uz_p[c], faces.uz_p[c + nx], pu[c]);
-    }
+    const std::size_t first = std::size_t(k) * nx;
+    u_volume(first, first + nx - 1);
+#pragma omp simd
+    for (std::size_t c = first + 1; c < first + nx; ++c) u_volume(c, c - 1);
   });
   parallel_for(nz - 1, true, [&](int k_from_1) {
-    const int k = k_from_1 + 1;
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t c = std::size_t(k) * nx + i,
-                        r = std::size_t(k) * nx + (i == nx - 1 ? 0 : i + 1);
-      const Balance b =
-          balance(faces.wx_c[c], faces.wx_c[r], faces.wz_c[c - nx], faces.wz_c[c], c, norm_w);
-      adv_w[c] = value(b, faces.wx_f[c], faces.wx_f[r], faces.wz_f[c - nx], faces.wz_f[c], w[c]);
-      if constexpr (Carry)
-        (*carried.adv_w)[c] =
-            value(b, faces.wx_p[c], faces.wx_p[r], faces.wz_p[c - nx], faces.wz_p[c], pw[c]);
-    }
+    const std::size_t first = std::size_t(k_from_1 + 1) * nx, last = first + nx - 1;
+#pragma omp simd
+    for (std::size_t c = first; c < last; ++c) w_volume(c, c + 1);
+    w_volume(last, first);
   });
 }
 
@@ -311,7 +360,7 @@ void consistent_momentum_advection(const Grid& g, const Fields& s, const MassFlu
   // below zero): there the divisor is rho^n, or the mass that entered, whichever is larger, which
   // keeps the update a weighted mean (u^n plus at most the whole difference to the inflow).
   auto new_density = [&](const std::vector<double>& rho) {
-    return [&rho, dt](std::size_t c, double div, double in) {
+    return [rho = rho.data(), dt](std::size_t c, double div, double in) {
       return std::max({rho[c] - dt * div, rho[c], dt * in});
     };
   };

@@ -15,9 +15,11 @@
 //           -Kc/dz^2 to w(i,k-+1) (the line); -Kn/dx^2 to w(i+-1,k); +-Kn/(dx dz) to the
 //           four u's around it
 //
-// One visitor per row type serves the product, the preconditioner and the assembly, so the
-// three cannot disagree; tests/twod/test_viscous_operator.cpp checks the product against the
-// assembled matrix and the symmetry.
+// One visitor per row type defines the rows and serves the assembly and the boundary rows. For
+// speed the product's interior rows and the preconditioner's line coefficients are written out
+// from the visitor's expressions in loops that vectorise; tests/twod/test_viscous_operator.cpp
+// checks the product against the assembled matrix (and its symmetry) and the preconditioner
+// against the line sweep of the assembled matrix, so the copies cannot drift apart unnoticed.
 //
 // Threads (parallel.hpp): rows are independent in the product and lines in the factors, so both
 // are parallel over columns. The preconditioner sweeps its lines in blocks of kChunk columns,

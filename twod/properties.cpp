@@ -152,8 +152,16 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   std::vector<double>& hcol = props.column_height;
   if (extrapolate) {
     hcol.assign(nx, 0.0);
-    parallel_for(nx, true, [&](int i) {  // columns; each sums over k in the serial order
-      for (int k = 0; k < nz; ++k) hcol[i] += f[g.at(i, k)] * g.dz;
+    // Each column sums over k in the serial order; the rows run outermost so that the inner loop
+    // over i is contiguous and vectorises (column by column it strode through memory).
+    parallel_for_ranges(nx, [&](int i0, int i1) {
+      double* h = hcol.data();
+      const double dz = g.dz;
+      for (int k = 0; k < nz; ++k) {
+        const double* fk = f.data() + std::size_t(k) * nx;
+#pragma omp simd
+        for (int i = i0; i < i1; ++i) h[i] += fk[i] * dz;
+      }
     });
   }
   // Per column (cells: column i; corners: columns i-1 and i together), the nearest row at or
@@ -165,22 +173,40 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   if (extrapolate) {
     for (auto* v : {&empty_above_c, &full_below_c, &empty_above_n, &full_below_n})
       v->resize(std::size_t(nx) * nz);
-    parallel_for(nx, true, [&](int i) {
-      auto cell_is = [&](int k, double v) { return f[g.at(i, k)] == v; };
-      auto pair_is = [&](int k, double v) { return f[g.at(i - 1, k)] == v && f[g.at(i, k)] == v; };
-      int full_c = -1, full_n = -1;
-      for (int k = 0; k < nz; ++k) {
-        if (cell_is(k, 1.0)) full_c = k;
-        if (pair_is(k, 1.0)) full_n = k;
-        full_below_c[g.at(i, k)] = full_c;
-        full_below_n[g.at(i, k)] = full_n;
+    // Row by row (each row from the one below, or above), contiguous in i within a thread's
+    // columns: a column-by-column scan strode through five arrays, 3 % of a 256 x 64 step.
+    parallel_for_ranges(nx, [&](int i0, int i1) {
+      auto row = [&](std::vector<int>& v, int k) { return v.data() + std::size_t(k) * nx; };
+      // i = 0 takes its left neighbour across the periodic end; the rest run contiguously
+      auto columns = [&](const double* fk, auto&& body) {
+        if (i0 == 0) body(0, fk[nx - 1]);
+#pragma omp simd
+        for (int i = std::max(i0, 1); i < i1; ++i) body(i, fk[i - 1]);
+      };
+      for (int k = 0; k < nz; ++k) {  // upwards: the nearest full row at or below k
+        const double* fk = f.data() + std::size_t(k) * nx;
+        int *fc = row(full_below_c, k), *fn = row(full_below_n, k);
+        const int *fc_below = row(full_below_c, std::max(k - 1, 0)),
+                  *fn_below = row(full_below_n, std::max(k - 1, 0));
+        const int none = -1;
+        columns(fk, [&](int i, double left) {
+          const int c_below = k > 0 ? fc_below[i] : none, n_below = k > 0 ? fn_below[i] : none;
+          fc[i] = fk[i] == 1.0 ? k : c_below;
+          fn[i] = left == 1.0 && fk[i] == 1.0 ? k : n_below;
+        });
       }
-      int empty_c = nz, empty_n = nz;
-      for (int k = nz - 1; k >= 0; --k) {
-        if (cell_is(k, 0.0)) empty_c = k;
-        if (pair_is(k, 0.0)) empty_n = k;
-        empty_above_c[g.at(i, k)] = empty_c;
-        empty_above_n[g.at(i, k)] = empty_n;
+      for (int k = nz - 1; k >= 0; --k) {  // downwards: the nearest empty row at or above k
+        const double* fk = f.data() + std::size_t(k) * nx;
+        int *ec = row(empty_above_c, k), *en = row(empty_above_n, k);
+        const int *ec_above = row(empty_above_c, std::min(k + 1, nz - 1)),
+                  *en_above = row(empty_above_n, std::min(k + 1, nz - 1));
+        const int none = nz;
+        columns(fk, [&](int i, double left) {
+          const int c_above = k < nz - 1 ? ec_above[i] : none,
+                    n_above = k < nz - 1 ? en_above[i] : none;
+          ec[i] = fk[i] == 0.0 ? k : c_above;
+          en[i] = left == 0.0 && fk[i] == 0.0 ? k : n_above;
+        });
       }
     });
   }

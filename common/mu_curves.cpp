@@ -1,6 +1,7 @@
 // mu(I) curves: values, analytic derivatives and inverses. See mu_curves.hpp for the equations.
 #include "common/mu_curves.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -146,6 +147,40 @@ MuCurve::WithLogSlope MuCurve::mu_with_log_slope(double I) const {
   const double num = m.mu_s * m.I0 + m.mu_d * I + quad_ * I * I;
   const double den = m.I0 + I;
   return {num / den, I * ((m.mu_d + 2.0 * quad_ * I) * den - num) / (den * num)};
+}
+
+void MuCurve::mu_with_log_slope_many(std::span<const double> I, std::span<double> mu,
+                                     std::span<double> log_slope) const {
+  const std::size_t n = I.size();
+  const double* in = I.data();
+  double *mu_out = mu.data(), *slope_out = log_slope.data();
+  if (kind_ != CurveKind::KamrinKoval) {
+    // mu_with_log_slope's rational branch, the same expressions (one lane per I; GCC vectorises
+    // the loop)
+    const Material& m = material_;
+    const double c0 = m.mu_s * m.I0, mu_d = m.mu_d, I0 = m.I0, q = quad_;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double x = in[j];
+      const double num = c0 + mu_d * x + q * x * x;
+      const double den = I0 + x;
+      mu_out[j] = num / den;
+      slope_out[j] = x * ((mu_d + 2.0 * q * x) * den - num) / (den * num);
+    }
+  }
+  // The I that the rational branch does not serve: I <= 0, and the low-I branch of I <= I1N
+  // (rare in a flow: first count them, in a loop that vectorises)
+  const double branch_limit = std::max(junction_I_, 0.0);
+  int below = 0;
+  for (std::size_t j = 0; j < n; ++j) below += in[j] <= branch_limit;
+  if (kind_ != CurveKind::KamrinKoval && below == 0) return;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double x = in[j];
+    if (kind_ == CurveKind::KamrinKoval || x <= branch_limit) {
+      const auto [m, s] = mu_with_log_slope(x);
+      mu_out[j] = m;
+      slope_out[j] = s;
+    }
+  }
 }
 
 double MuCurve::inverse(double target) const {

@@ -52,6 +52,13 @@ class MuCurve {
     double log_slope;
   };
   WithLogSlope mu_with_log_slope(double I) const;
+  // The same at every I of a range (all three spans of one size), each value bitwise that of
+  // mu_with_log_slope: the rational upper branch of all I in one vectorised loop, then the few I
+  // on the low-I branch (or <= 0) one by one. Any I may be +inf or NaN (its values are then
+  // whatever the arithmetic gives): the 2D model evaluates whole rows and discards the lanes it
+  // does not use.
+  void mu_with_log_slope_many(std::span<const double> I, std::span<double> mu,
+                              std::span<double> log_slope) const;
   // I with mu(I) = target; throws CurveRangeError outside (mu_min, mu_max).
   double inverse(double target_mu) const;
 

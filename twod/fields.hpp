@@ -43,6 +43,8 @@ struct Properties {
   // nearest full row at or below it (properties.cpp). Kept, like the above, so that a step
   // allocates nothing.
   std::vector<double> column_height;
+  // and the pressure that the cells above each column's surface take: the overburden there
+  std::vector<double> surface_pressure;
   std::vector<int> empty_above_c, full_below_c, empty_above_n, full_below_n;
 
   explicit Properties(const Grid& g = Grid())

@@ -45,6 +45,7 @@
 #include "twod/properties.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -93,6 +94,60 @@ double ViscosityModel::mix(double f, double eta_g) const {
   if (f <= 0.0) return r_.eta_light;
   if (r_.mixing == ViscosityMixing::Arithmetic) return f * eta_g + (1.0 - f) * r_.eta_light;
   return 1.0 / (f / eta_g + (1.0 - f) / r_.eta_light);
+}
+
+void ViscosityModel::mixture_with_tangent_many(std::span<const double> f, std::span<const double> p,
+                                               std::span<const double> D,
+                                               std::span<const double> weight,
+                                               std::span<double> eta,
+                                               std::span<double> eta_tangent) const {
+  // The arithmetic of granular_with_tangent, mix and mix_tangent, lane by lane: every branch is
+  // computed and one result selected (the discarded lanes may hold inf or NaN), so each value is
+  // bitwise the scalar one. std::max(a, b) is b < a ? ... as in the library, and so on.
+  constexpr std::size_t kChunk = 128;
+  std::array<double, kChunk> I, mu, log_slope;
+  const double eta_l = r_.eta_light, eta_min = r_.eta_min, eta_max = r_.eta_max, D_min = r_.D_min;
+  const double newtonian = r_.newtonian_eta, scale = d_over_sqrt_rho_;
+  const bool harmonic = r_.mixing == ViscosityMixing::Harmonic;
+  for (std::size_t j0 = 0; j0 < f.size(); j0 += kChunk) {
+    const std::size_t n = std::min(kChunk, f.size() - j0);
+    const double *fj = f.data() + j0, *pj = p.data() + j0, *Dj = D.data() + j0,
+                 *wj = weight.data() + j0;
+    double *eta_j = eta.data() + j0, *eta_tj = eta_tangent.data() + j0;
+#pragma omp simd
+    for (std::size_t j = 0; j < n; ++j) {  // I of (2.8) at the floored |D|
+      const double Df = Dj[j] < D_min ? D_min : Dj[j];
+      I[j] = scale * Df / std::sqrt(pj[j]);
+    }
+    curve_.mu_with_log_slope_many(std::span(I.data(), n), std::span(mu.data(), n),
+                                  std::span(log_slope.data(), n));
+#pragma omp simd
+    for (std::size_t j = 0; j < n; ++j) {
+      const double fr = fj[j], pr = pj[j], Dv = Dj[j];
+      const double Df = Dv < D_min ? D_min : Dv;
+      // granular_with_tangent
+      const double eta_mu = mu[j] * pr / (2.0 * Df);  // (2.11)
+      const bool secant = Dv <= D_min || eta_mu <= eta_min || eta_mu >= eta_max;
+      const double eta_clamped = eta_mu < eta_min ? eta_min : (eta_max < eta_mu ? eta_max : eta_mu);
+      const double slope = log_slope[j] < 0.0 ? 0.0 : (1.0 < log_slope[j] ? 1.0 : log_slope[j]);
+      double eta_g = secant ? eta_clamped : eta_mu, ratio = secant ? 1.0 : slope;
+      if (pr <= 0.0) eta_g = eta_min, ratio = 1.0;
+      if (newtonian > 0.0) eta_g = newtonian, ratio = 1.0;
+      // set_eta: the tangent of the granular part, then the mixture
+      const double eta_gt = eta_g * (1.0 - (1.0 - ratio) * wj[j]);
+      double mixed, mixed_t;
+      if (harmonic) {
+        mixed = 1.0 / (fr / eta_g + (1.0 - fr) / eta_l);
+        mixed_t = mixed + fr * mixed * mixed / (eta_g * eta_g) * (eta_gt - eta_g);
+      } else {
+        mixed = fr * eta_g + (1.0 - fr) * eta_l;
+        mixed_t = fr * eta_gt + (1.0 - fr) * eta_l;
+      }
+      const bool full = fr >= 1.0, empty = fr <= 0.0;
+      eta_j[j] = empty ? eta_l : (full ? eta_g : mixed);
+      eta_tj[j] = empty ? eta_l : (full ? eta_gt : mixed_t);
+    }
+  }
 }
 
 void update_densities(const Grid& g, const std::vector<double>& f, const Rheology& r,
@@ -231,6 +286,12 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     if (zb >= h) return ps;
     return ps + (p_at(kb) - ps) * (h - z) / (h - zb);
   };
+  // The pressure of every cell above its column's surface (z >= h in p_granular), once per column.
+  std::vector<double>& p_above_surface = props.surface_pressure;
+  if (extrapolate) {
+    p_above_surface.resize(nx);
+    for (int i = 0; i < nx; ++i) p_above_surface[i] = p_granular(i, hcol[i], false);
+  }
   // A partly filled cell with a full cell below and an empty one above: the surface row of a
   // surface that is a graph. Its strain rate is its grains': the shear of its two lower corners,
   // over the shear spacing (1 + f) dz / 2 as the corners' own stress takes it (below), not the
@@ -243,68 +304,190 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
   Dxx.resize(g.cells());
   Dzz.resize(g.cells());
+  // One cell, as written in the equations; the rows below take the cells whose mu(I) needs no
+  // interface treatment through the vectorised path (the same arithmetic), and this one for the
+  // interface cells of the Extrapolated rule.
+  auto cell = [&](int i, int k) {
+    const std::size_t c = g.at(i, k);
+    Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
+    Dzz[c] = (w[g.at(i, k + 1)] - w[c]) * idz;
+    double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
+                          gam[g.at(i + 1, k + 1)]);
+    if (spacing && is_graph_surface_row(g, f, i, k))  // the grains' shear: the corners below only
+      Dxz = 0.25 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)]) * 2.0 / (1.0 + f[c]);
+    const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);
+    const double D = std::sqrt(normal2 + Dxz * Dxz);
+    double pc = p[c];
+    if (extrapolate && f[c] < 1.0 && f[c] > 0.0)  // at the centroid of the granular part
+      pc = p_granular(i, k * g.dz + 0.5 * std::min(f[c] * g.dz, g.dz), false);
+    set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
+    props.I_c[c] = model.inertial_number(p[c], D);
+  };
+  // Cell (i, k) takes the Extrapolated rule's interface treatment.
+  auto interface_cell = [&](std::size_t c) { return extrapolate && f[c] < 1.0 && f[c] > 0.0; };
   // Rows spread over the threads (interleaved): mu(I) is evaluated only below the surface, so
-  // contiguous blocks of rows gave one thread the grains and the other the light fluid.
+  // contiguous blocks of rows gave one thread the grains and the other the light fluid. Each row
+  // goes in chunks: strain rates, |D| and the shares of a chunk in one vectorised loop (`cell`'s
+  // expressions; its last column wraps to column 0), then the viscosities of the chunk
+  // (mixture_with_tangent_many), then the interface cells one by one. Scalar, cell by cell, this
+  // was 15 % of a one-thread 256 x 64 step.
+  constexpr int kChunk = 128;
+  const double* fd = f.data();
   parallel_for_interleaved(nz, [&](int k) {
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t c = g.at(i, k);
-      Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
-      Dzz[c] = (w[g.at(i, k + 1)] - w[c]) * idz;
-      double Dxz = 0.125 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)] + gam[g.at(i, k + 1)] +
-                            gam[g.at(i + 1, k + 1)]);
-      if (spacing && is_graph_surface_row(g, f, i, k))  // the grains' shear: the corners below only
-        Dxz = 0.25 * (gam[g.at(i, k)] + gam[g.at(i + 1, k)]) * 2.0 / (1.0 + f[c]);
-      const double normal2 = 0.5 * (Dxx[c] * Dxx[c] + Dzz[c] * Dzz[c]);
-      const double D = std::sqrt(normal2 + Dxz * Dxz);
-      double pc = p[c];
-      if (extrapolate && f[c] < 1.0 && f[c] > 0.0)  // at the centroid of the granular part
-        pc = p_granular(i, k * g.dz + 0.5 * std::min(f[c] * g.dz, g.dz), false);
-      set_eta(f[c], pc, D, share(normal2, D * D), props.eta_c[c], props.eta_c_tangent[c]);
-      props.I_c[c] = model.inertial_number(p[c], D);
+    const std::size_t row = std::size_t(k) * nx, above = row + nx;
+    const double *ur = u.data() + row, *wr = w.data() + row, *wa = w.data() + above,
+                 *pr = p.data() + row, *gr = gam.data() + row, *ga = gam.data() + above;
+    double *dxx = Dxx.data() + row, *dzz = Dzz.data() + row, *I_c = props.I_c.data() + row;
+    const double scale = model.inertial_number_prefactor();
+    for (int i0 = 0; i0 < nx; i0 += kChunk) {
+      const int n = std::min(kChunk, nx - i0);
+      std::array<double, kChunk> D_chunk, weight_chunk;
+      double *D = D_chunk.data() - i0, *weight = weight_chunk.data() - i0;  // (by value: below)
+      auto strain = [=](int i, int ip) {  // column i, its right neighbour ip
+        dxx[i] = (ur[ip] - ur[i]) * idx;
+        dzz[i] = (wa[i] - wr[i]) * idz;
+        const double Dxz = 0.125 * (gr[i] + gr[ip] + ga[i] + ga[ip]);
+        const double normal2 = 0.5 * (dxx[i] * dxx[i] + dzz[i] * dzz[i]);
+        const double Dv = std::sqrt(normal2 + Dxz * Dxz);
+        const double D2 = Dv * Dv, part = normal2 / D2;
+        D[i] = Dv;
+        weight[i] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
+        const double I = scale * Dv / std::sqrt(pr[i]);
+        I_c[i] = pr[i] <= 0.0 ? std::numeric_limits<double>::infinity() : I;
+      };
+      const int wrap_end = i0 + n == nx ? i0 + n - 1 : i0 + n;  // the last column wraps
+#pragma omp simd
+      for (int i = i0; i < wrap_end; ++i) strain(i, i + 1);
+      if (wrap_end < i0 + n) strain(nx - 1, 0);
+      // The interface cells: those above their column's surface (most of them hold wisps of
+      // grains in the light fluid) differ only in their pressure; the others, at the surface,
+      // go through `cell` after the chunk.
+      std::array<double, kChunk> pc_chunk;
+      double* pc = pc_chunk.data() - i0;
+      std::array<int, kChunk> at_surface;
+      int surface_cells = 0;
+      for (int i = i0; i < i0 + n; ++i) {
+        pc[i] = pr[i];
+        if (!interface_cell(row + i)) continue;
+        const double z = k * g.dz + 0.5 * std::min(fd[row + i] * g.dz, g.dz);  // as in `cell`
+        if (z >= hcol[i] && !(spacing && is_graph_surface_row(g, f, i, k)))
+          pc[i] = p_above_surface[i];
+        else
+          at_surface[surface_cells++] = i;
+      }
+      model.mixture_with_tangent_many(std::span(fd + row + i0, n), std::span(pc + i0, n),
+                                      std::span(D + i0, n), std::span(weight + i0, n),
+                                      std::span(props.eta_c.data() + row + i0, n),
+                                      std::span(props.eta_c_tangent.data() + row + i0, n));
+      for (int j = 0; j < surface_cells; ++j) cell(at_surface[j], k);
     }
   });
+  // One corner, as `cell` is one cell.
+  auto corner = [&](int i, int k) {
+    const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
+    const std::size_t a = g.at(i - 1, kb), b = g.at(i, kb), c = g.at(i - 1, kt), d = g.at(i, kt);
+    const double dxx = 0.25 * (Dxx[a] + Dxx[b] + Dxx[c] + Dxx[d]);
+    const double dzz = 0.25 * (Dzz[a] + Dzz[b] + Dzz[c] + Dzz[d]);
+    const double dxz = 0.5 * gam[g.at(i, k)];
+    const double D = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
+    const double shear_share = share(dxz * dxz, D * D);
+    const std::size_t n = g.at(i, k);
+    double pn;
+    if (k == 0)  // linear extrapolation of the two lowest rows to the bed
+      pn = 0.5 * (1.5 * (p[a] + p[b]) - 0.5 * (p[g.at(i - 1, 1)] + p[g.at(i, 1)]));
+    else if (k == nz)
+      pn = 0.0;  // p = 0 on the top boundary
+    else
+      pn = 0.25 * (p[a] + p[b] + p[c] + p[d]);
+    const double fn = 0.25 * (f[a] + f[b] + f[c] + f[d]);
+    if (extrapolate && k > 0 && k < nz && fn < 1.0 && fn > 0.0) {
+      // an interface corner is granular when it lies below the surface of its two columns,
+      // with the overburden pressure there; light fluid otherwise (no mixing)
+      const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]);
+      const double f_above = 0.5 * (f[c] + f[d]);
+      if (model.rheology().surface_row_shear_spacing && k * g.dz < h && f_above < 1.0) {
+        // below a partly filled row: gamma over the distance (1 + f) dz / 2 from the row
+        // below's centre to the centroid of the row's grains, where its u lives; the corner
+        // viscosity carries dz / that distance so that the stencil's gamma gives the stress
+        const double scale = 2.0 / (1.0 + std::max(f_above, 0.0));
+        const double dxz_s = dxz * scale;
+        const double D_s = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz_s * dxz_s);
+        set_eta(1.0, p_granular(i, k * g.dz, true), D_s, share(dxz_s * dxz_s, D_s * D_s),
+                props.eta_n[n], props.eta_n_tangent[n]);
+        props.eta_n[n] *= scale;
+        props.eta_n_tangent[n] *= scale;
+        return;
+      }
+      set_eta(k * g.dz < h ? 1.0 : 0.0, p_granular(i, k * g.dz, true), D, shear_share,
+              props.eta_n[n], props.eta_n_tangent[n]);
+      return;
+    }
+    set_eta(fn, pn, D, shear_share, props.eta_n[n], props.eta_n_tangent[n]);
+  };
   // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
+  // In chunks as the cells: `corner`'s expressions vectorised (its first column wraps to column
+  // nx - 1), the interface corners of the Extrapolated rule one by one.
   parallel_for_interleaved(nz + 1, [&](int k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t a = g.at(i - 1, kb), b = g.at(i, kb), c = g.at(i - 1, kt), d = g.at(i, kt);
-      const double dxx = 0.25 * (Dxx[a] + Dxx[b] + Dxx[c] + Dxx[d]);
-      const double dzz = 0.25 * (Dzz[a] + Dzz[b] + Dzz[c] + Dzz[d]);
-      const double dxz = 0.5 * gam[g.at(i, k)];
-      const double D = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
-      const double shear_share = share(dxz * dxz, D * D);
-      const std::size_t n = g.at(i, k);
-      double pn;
-      if (k == 0)  // linear extrapolation of the two lowest rows to the bed
-        pn = 0.5 * (1.5 * (p[a] + p[b]) - 0.5 * (p[g.at(i - 1, 1)] + p[g.at(i, 1)]));
-      else if (k == nz)
-        pn = 0.0;  // p = 0 on the top boundary
+    const std::size_t row_b = std::size_t(kb) * nx, row_t = std::size_t(kt) * nx,
+                      row = std::size_t(k) * nx, row_1 = std::size_t(1) * nx;
+    const double *xb = Dxx.data() + row_b, *xt = Dxx.data() + row_t, *zb = Dzz.data() + row_b,
+                 *zt = Dzz.data() + row_t, *pb = p.data() + row_b, *pt = p.data() + row_t,
+                 *p1 = p.data() + row_1, *fb = fd + row_b, *ft = fd + row_t, *gr = gam.data() + row;
+    const bool bed = k == 0, top = k == nz;
+    for (int i0 = 0; i0 < nx; i0 += kChunk) {
+      const int n = std::min(kChunk, nx - i0);
+      std::array<double, kChunk> D_chunk, weight_chunk, pn_chunk, fn_chunk;
+      // (pointers by value: through a reference GCC reloads them after every store and gives up)
+      double *D = D_chunk.data() - i0, *weight = weight_chunk.data() - i0,
+             *pn = pn_chunk.data() - i0, *fn = fn_chunk.data() - i0;
+      auto inputs = [=](int im, int i) {  // corner column i, the cells' columns im = i - 1 and i
+        const double dxx = 0.25 * (xb[im] + xb[i] + xt[im] + xt[i]);
+        const double dzz = 0.25 * (zb[im] + zb[i] + zt[im] + zt[i]);
+        const double dxz = 0.5 * gr[i];
+        const double Dv = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
+        const double D2 = Dv * Dv, part = dxz * dxz / D2;
+        D[i] = Dv;
+        weight[i] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
+        fn[i] = 0.25 * (fb[im] + fb[i] + ft[im] + ft[i]);
+      };
+      // (corner columns i0 .. i0 + n - 1, column 0 wrapping; one loop per kind of row: GCC does
+      // not vectorise a select on the row's kind)
+      auto columns = [&](auto&& body) {
+        if (i0 == 0) body(nx - 1, 0);
+#pragma omp simd
+        for (int i = std::max(i0, 1); i < i0 + n; ++i) body(i - 1, i);
+      };
+      columns(inputs);
+      if (bed)  // linear extrapolation of the two lowest rows to the bed
+        columns([=](int im, int i) {
+          pn[i] = 0.5 * (1.5 * (pb[im] + pb[i]) - 0.5 * (p1[im] + p1[i]));
+        });
+      else if (top)
+        columns([=](int, int i) { pn[i] = 0.0; });  // p = 0 on the top boundary
       else
-        pn = 0.25 * (p[a] + p[b] + p[c] + p[d]);
-      const double fn = 0.25 * (f[a] + f[b] + f[c] + f[d]);
-      if (extrapolate && k > 0 && k < nz && fn < 1.0 && fn > 0.0) {
-        // an interface corner is granular when it lies below the surface of its two columns,
-        // with the overburden pressure there; light fluid otherwise (no mixing)
-        const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[g.wrap(i)]);
-        const double f_above = 0.5 * (f[c] + f[d]);
-        if (model.rheology().surface_row_shear_spacing && k * g.dz < h && f_above < 1.0) {
-          // below a partly filled row: gamma over the distance (1 + f) dz / 2 from the row
-          // below's centre to the centroid of the row's grains, where its u lives; the corner
-          // viscosity carries dz / that distance so that the stencil's gamma gives the stress
-          const double scale = 2.0 / (1.0 + std::max(f_above, 0.0));
-          const double dxz_s = dxz * scale;
-          const double D_s = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz_s * dxz_s);
-          set_eta(1.0, p_granular(i, k * g.dz, true), D_s, share(dxz_s * dxz_s, D_s * D_s),
-                  props.eta_n[n], props.eta_n_tangent[n]);
-          props.eta_n[n] *= scale;
-          props.eta_n_tangent[n] *= scale;
-          continue;
-        }
-        set_eta(k * g.dz < h ? 1.0 : 0.0, p_granular(i, k * g.dz, true), D, shear_share,
-                props.eta_n[n], props.eta_n_tangent[n]);
-        continue;
+        columns([=](int im, int i) { pn[i] = 0.25 * (pb[im] + pb[i] + pt[im] + pt[i]); });
+      // Interface corners above the surface of their two columns are light fluid (`corner`):
+      // fraction 0. The others, at the surface, go through `corner` after the chunk.
+      std::array<double, kChunk> fraction_chunk;
+      double* fraction = fraction_chunk.data() - i0;
+      std::array<int, kChunk> at_surface;
+      int surface_corners = 0;
+      const double z = k * g.dz;
+      for (int i = i0; i < i0 + n; ++i) {
+        fraction[i] = fn[i];
+        if (!(extrapolate && !bed && !top && fn[i] < 1.0 && fn[i] > 0.0)) continue;
+        const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[i]);  // as in `corner`
+        if (z < h)
+          at_surface[surface_corners++] = i;
+        else
+          fraction[i] = 0.0;
       }
-      set_eta(fn, pn, D, shear_share, props.eta_n[n], props.eta_n_tangent[n]);
+      model.mixture_with_tangent_many(std::span(fraction + i0, n), std::span(pn + i0, n),
+                                      std::span(D + i0, n), std::span(weight + i0, n),
+                                      std::span(props.eta_n.data() + row + i0, n),
+                                      std::span(props.eta_n_tangent.data() + row + i0, n));
+      for (int j = 0; j < surface_corners; ++j) corner(at_surface[j], k);
     }
   });
 }

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "common/mu_curves.hpp"
 
@@ -46,6 +48,36 @@ TEST(MuCurves, CombinedValueAndLogSlopeMatchTheSeparateOnes) {
       EXPECT_NEAR(slope, expected, 1e-13 * std::abs(expected) + 1e-300)
           << curve_name(kind) << " at I = " << I;
     }
+  }
+}
+
+// The batch form is the 2D model's: it must give each value bitwise as the scalar form, on both
+// branches, at the junction, at I <= 0 and at the inf/NaN lanes it is documented to accept.
+TEST(MuCurves, BatchValueAndLogSlopeAreBitwiseTheScalarOnes) {
+  for (CurveKind kind : kAll) {
+    const MuCurve c(kind, Material{});
+    std::vector<double> I = sample_I();
+    if (c.junction_I() > 0.0)
+      I.insert(I.end(),
+               {c.junction_I(), c.junction_I() * (1.0 - 1e-12), c.junction_I() * (1.0 + 1e-12)});
+    I.insert(I.end(), {0.0, -1e-3, 3.7, 250.0});
+    // several lengths: the vectorised loop's remainder lanes too
+    for (std::size_t n : {I.size(), std::size_t(1), std::size_t(7), I.size() - 3}) {
+      std::vector<double> mu(n), slope(n);
+      c.mu_with_log_slope_many(std::span(I.data(), n), mu, slope);
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto [m, s] = c.mu_with_log_slope(I[j]);
+        EXPECT_EQ(mu[j], m) << curve_name(kind) << " at I = " << I[j];
+        EXPECT_EQ(slope[j], s) << curve_name(kind) << " at I = " << I[j];
+      }
+    }
+    // lanes of +inf or NaN are accepted; a lane of finite I beside them is unchanged
+    std::vector<double> odd = {std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::quiet_NaN(), 0.3};
+    std::vector<double> mu(3), slope(3);
+    c.mu_with_log_slope_many(odd, mu, slope);
+    EXPECT_EQ(mu[2], c.mu_with_log_slope(0.3).mu) << curve_name(kind);
+    EXPECT_EQ(slope[2], c.mu_with_log_slope(0.3).log_slope) << curve_name(kind);
   }
 }
 

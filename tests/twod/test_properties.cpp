@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
+#include <vector>
 
 #include "twod/properties.hpp"
 
@@ -44,6 +46,49 @@ TEST(Properties, MixingRules) {
   EXPECT_DOUBLE_EQ(h.mix(1.0, 0.5), 0.5);
   EXPECT_DOUBLE_EQ(h.mix(0.0, 0.5), 1e-3);
   EXPECT_NEAR(h.mix(0.5, 0.5), 1.0 / (0.5 / 0.5 + 0.5 / 1e-3), 1e-15);
+}
+
+// mixture_with_tangent_many, the vectorised path of update_viscosity, against the scalar
+// composition it replaces (granular_with_tangent, then mix and mix_tangent with the tangent
+// weighted by the share of |D|^2), bitwise: every branch (light fluid, full, mixed; p <= 0, |D|
+// at its floor, eta capped and floored, the low-I branch) under both mixing rules and the
+// Newtonian override, over lengths that leave the vector loop remainders.
+TEST(Properties, BatchMixtureViscosityIsBitwiseTheScalarOne) {
+  std::vector<double> f, p, D, weight;
+  for (double fr : {0.0, 1e-9, 0.3, 1.0})
+    for (double pr : {-2.0, 0.0, 1e-9, 0.5, 30.0, 400.0})
+      for (double Dv : {0.0, 1e-7, 0.02, 5.0, 40.0, 3000.0})
+        for (double w : {0.0, 0.5, 1.0}) {
+          f.push_back(fr);
+          p.push_back(pr);
+          D.push_back(Dv);
+          weight.push_back(w);
+        }
+  for (ViscosityMixing mixing : {ViscosityMixing::Arithmetic, ViscosityMixing::Harmonic})
+    for (double newtonian : {0.0, 0.7}) {
+      Rheology r;
+      r.mixing = mixing;
+      r.newtonian_eta = newtonian;
+      r.eta_light = 1e-3;
+      const ViscosityModel m(r);
+      for (std::size_t n : {f.size(), f.size() - 5, std::size_t(3)}) {
+        std::vector<double> eta(n), eta_t(n);
+        m.mixture_with_tangent_many(std::span(f.data(), n), std::span(p.data(), n),
+                                    std::span(D.data(), n), std::span(weight.data(), n), eta,
+                                    eta_t);
+        for (std::size_t j = 0; j < n; ++j) {
+          double expected = r.eta_light, expected_t = r.eta_light;
+          if (f[j] > 0.0) {
+            const auto [eta_g, ratio] = m.granular_with_tangent(p[j], D[j]);
+            const double eta_gt = eta_g * (1.0 - (1.0 - ratio) * weight[j]);
+            expected = m.mix(f[j], eta_g);
+            expected_t = m.mix_tangent(f[j], eta_g, eta_gt);
+          }
+          EXPECT_EQ(eta[j], expected) << "f " << f[j] << " p " << p[j] << " D " << D[j];
+          EXPECT_EQ(eta_t[j], expected_t) << "f " << f[j] << " p " << p[j] << " D " << D[j];
+        }
+      }
+    }
 }
 
 // Rheology::surface_row_shear_spacing: with a Newtonian granular phase the corner below a partly

@@ -131,18 +131,27 @@ void ViscousOperator::set_stress(const std::vector<double>& eta_c,
   std::fill(mass_w_.begin(), mass_w_.end(), 0.0);
 }
 
+namespace {
+// The columns of a block in the row-major to column-major copies: a cache line of doubles.
+constexpr int kTransposeColumns = 8;
+}  // namespace
+
 void ViscousOperator::set_stress_weights(const std::vector<double>& eta_c,
                                          const std::vector<double>& eta_n) {
   // Column by column (i nz + k for cells and u, i (nz + 1) + k for corners), so that the loops
   // along a line read contiguous memory.
+  // In blocks of kTransposeColumns columns, the rows outermost within a block: each row's read
+  // of the block is one cache line, and the block's columns are written side by side.
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
-  parallel_for(nx, true, [&](int i) {
-    for (int k = 0; k <= nz; ++k) {
-      const std::size_t c = g_.at(i, k);
-      if (k < nz) kc_[i * nz + k] = 2.0 * eta_c[c] * V;
-      kn_[i * (nz + 1) + k] = eta_n[c] * V;
-    }
+  parallel_for((nx + kTransposeColumns - 1) / kTransposeColumns, true, [&](int block) {
+    const int i0 = block * kTransposeColumns, i1 = std::min(i0 + kTransposeColumns, nx);
+    for (int k = 0; k <= nz; ++k)
+      for (int i = i0; i < i1; ++i) {
+        const std::size_t c = std::size_t(k) * nx + i;
+        if (k < nz) kc_[i * nz + k] = 2.0 * eta_c[c] * V;
+        kn_[i * (nz + 1) + k] = eta_n[c] * V;
+      }
   });
 }
 
@@ -152,12 +161,14 @@ void ViscousOperator::set(const Properties& props, const std::vector<double>& et
   const double V_dt = g_.cell_volume() / dt;
   const int nx = g_.nx, nz = g_.nz;
   // (every entry that a row reads is written here: no zeroing first)
-  parallel_for(nx, true, [&](int i) {
-    for (int k = 0; k < nz; ++k) {
-      const std::size_t c = g_.at(i, k);
-      mass_u_[i * nz + k] = props.rho_u[c] * V_dt;
-      if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V_dt;
-    }
+  parallel_for((nx + kTransposeColumns - 1) / kTransposeColumns, true, [&](int block) {
+    const int i0 = block * kTransposeColumns, i1 = std::min(i0 + kTransposeColumns, nx);
+    for (int k = 0; k < nz; ++k)  // (blocks as in set_stress_weights)
+      for (int i = i0; i < i1; ++i) {
+        const std::size_t c = std::size_t(k) * nx + i;
+        mass_u_[i * nz + k] = props.rho_u[c] * V_dt;
+        if (k > 0) mass_w_[i * (nz - 1) + k - 1] = props.rho_w[c] * V_dt;
+      }
   });
   // The lines' coefficients, then their Thomas factors m_k = d_k - a_k c'_{k-1},
   // c'_k = c_k / m_k. The coefficients are the visitor's diagonal, lower and upper entries

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -50,6 +51,19 @@ std::size_t count(const std::string& file, const std::string& what) {
   return n;
 }
 
+// Kills and reaps the forked run when the test leaves before it has (a failed ASSERT, the wait
+// below timing out), so that no run outlives the test.
+struct ChildGuard {
+  pid_t pid = -1;
+  bool reaped = false;
+  ~ChildGuard() {
+    if (pid > 0 && !reaped) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+    }
+  }
+};
+
 }  // namespace
 
 TEST(TwodSigkill, ARunKilledAfterACheckpointRestartsIntoTheSameOutAsIfUninterrupted) {
@@ -71,18 +85,22 @@ TEST(TwodSigkill, ARunKilledAfterACheckpointRestartsIntoTheSameOutAsIfUninterrup
     execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
+  ChildGuard child{pid};
   int status = 0;
   bool exited = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (!fs::exists(checkpoint)) {
     if (waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
+      exited = child.reaped = true;
       break;
     }
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "no checkpoint after 5 minutes";
     usleep(2000);
   }
   ASSERT_FALSE(exited) << "the run ended before its first checkpoint (status " << status << ")";
   kill(pid, SIGKILL);
   ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  child.reaped = true;
   ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
       << "the run completed before the kill; make it longer";
   ASSERT_TRUE(fs::exists(out));  // brought up to date at the checkpoint, before it

@@ -114,6 +114,13 @@ void ViscosityModel::mixture_with_tangent_many(std::span<const double> f, std::s
     const double *fj = f.data() + j0, *pj = p.data() + j0, *Dj = D.data() + j0,
                  *wj = weight.data() + j0;
     double *eta_j = eta.data() + j0, *eta_tj = eta_tangent.data() + j0;
+    int granular = 0;  // a chunk of light fluid only (the corners above the surface) needs no mu(I)
+    for (std::size_t j = 0; j < n; ++j) granular += fj[j] > 0.0;
+    if (granular == 0) {
+      std::fill_n(eta_j, n, eta_l);
+      std::fill_n(eta_tj, n, eta_l);
+      continue;
+    }
 #pragma omp simd
     for (std::size_t j = 0; j < n; ++j) {  // I of (2.8) at the floored |D|
       const double Df = Dj[j] < D_min ? D_min : Dj[j];

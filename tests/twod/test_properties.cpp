@@ -88,6 +88,16 @@ TEST(Properties, BatchMixtureViscosityIsBitwiseTheScalarOne) {
           EXPECT_EQ(eta_t[j], expected_t) << "f " << f[j] << " p " << p[j] << " D " << D[j];
         }
       }
+      // a stretch of light fluid only (the rows above the surface skip mu(I) altogether)
+      const std::size_t n = 300;
+      const std::vector<double> none(n, 0.0);
+      std::vector<double> eta(n), eta_t(n);
+      m.mixture_with_tangent_many(none, std::span(p.data(), n), std::span(D.data(), n),
+                                  std::span(weight.data(), n), eta, eta_t);
+      for (std::size_t j = 0; j < n; ++j) {
+        EXPECT_EQ(eta[j], r.eta_light);
+        EXPECT_EQ(eta_t[j], r.eta_light);
+      }
     }
 }
 

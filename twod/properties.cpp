@@ -103,7 +103,8 @@ void ViscosityModel::mixture_with_tangent_many(std::span<const double> f, std::s
                                                std::span<double> eta_tangent) const {
   // The arithmetic of granular_with_tangent, mix and mix_tangent, lane by lane: every branch is
   // computed and one result selected (the discarded lanes may hold inf or NaN), so each value is
-  // bitwise the scalar one. std::max(a, b) is b < a ? ... as in the library, and so on.
+  // bitwise the scalar one. std::max, std::min and std::clamp are written out as the library
+  // defines them (std::max(a, b) = a < b ? b : a), so that even a NaN selects as there.
   constexpr std::size_t kChunk = 128;
   std::array<double, kChunk> I, mu, log_slope;
   const double eta_l = r_.eta_light, eta_min = r_.eta_min, eta_max = r_.eta_max, D_min = r_.D_min;
@@ -311,9 +312,9 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   std::vector<double>&Dxx = props.D_xx_c, &Dzz = props.D_zz_c;
   Dxx.resize(g.cells());
   Dzz.resize(g.cells());
-  // One cell, as written in the equations; the rows below take the cells whose mu(I) needs no
-  // interface treatment through the vectorised path (the same arithmetic), and this one for the
-  // interface cells of the Extrapolated rule.
+  // One cell, as written in the equations. The rows below take every cell through the vectorised
+  // path (the same arithmetic) but the interface cells at the surface under the Extrapolated
+  // rule, which take this one.
   auto cell = [&](int i, int k) {
     const std::size_t c = g.at(i, k);
     Dxx[c] = (u[g.at(i + 1, k)] - u[c]) * idx;
@@ -349,7 +350,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     for (int i0 = 0; i0 < nx; i0 += kChunk) {
       const int n = std::min(kChunk, nx - i0);
       std::array<double, kChunk> D_chunk, weight_chunk;
-      double *D = D_chunk.data() - i0, *weight = weight_chunk.data() - i0;  // (by value: below)
+      // (pointers by value: through a reference GCC reloads them after every store and gives up)
+      double *D = D_chunk.data(), *weight = weight_chunk.data();
       auto strain = [=](int i, int ip) {  // column i, its right neighbour ip
         dxx[i] = (ur[ip] - ur[i]) * idx;
         dzz[i] = (wa[i] - wr[i]) * idz;
@@ -357,8 +359,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
         const double normal2 = 0.5 * (dxx[i] * dxx[i] + dzz[i] * dzz[i]);
         const double Dv = std::sqrt(normal2 + Dxz * Dxz);
         const double D2 = Dv * Dv, part = normal2 / D2;
-        D[i] = Dv;
-        weight[i] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
+        D[i - i0] = Dv;
+        weight[i - i0] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
         const double I = scale * Dv / std::sqrt(pr[i]);
         I_c[i] = pr[i] <= 0.0 ? std::numeric_limits<double>::infinity() : I;
       };
@@ -370,20 +372,20 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       // grains in the light fluid) differ only in their pressure; the others, at the surface,
       // go through `cell` after the chunk.
       std::array<double, kChunk> pc_chunk;
-      double* pc = pc_chunk.data() - i0;
+      double* pc = pc_chunk.data();
       std::array<int, kChunk> at_surface;
       int surface_cells = 0;
       for (int i = i0; i < i0 + n; ++i) {
-        pc[i] = pr[i];
+        pc[i - i0] = pr[i];
         if (!interface_cell(row + i)) continue;
         const double z = k * g.dz + 0.5 * std::min(fd[row + i] * g.dz, g.dz);  // as in `cell`
         if (z >= hcol[i] && !(spacing && is_graph_surface_row(g, f, i, k)))
-          pc[i] = p_above_surface[i];
+          pc[i - i0] = p_above_surface[i];
         else
           at_surface[surface_cells++] = i;
       }
-      model.mixture_with_tangent_many(std::span(fd + row + i0, n), std::span(pc + i0, n),
-                                      std::span(D + i0, n), std::span(weight + i0, n),
+      model.mixture_with_tangent_many(std::span(fd + row + i0, n), std::span(pc, n),
+                                      std::span(D, n), std::span(weight, n),
                                       std::span(props.eta_c.data() + row + i0, n),
                                       std::span(props.eta_c_tangent.data() + row + i0, n));
       for (int j = 0; j < surface_cells; ++j) cell(at_surface[j], k);
@@ -446,17 +448,17 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       const int n = std::min(kChunk, nx - i0);
       std::array<double, kChunk> D_chunk, weight_chunk, pn_chunk, fn_chunk;
       // (pointers by value: through a reference GCC reloads them after every store and gives up)
-      double *D = D_chunk.data() - i0, *weight = weight_chunk.data() - i0,
-             *pn = pn_chunk.data() - i0, *fn = fn_chunk.data() - i0;
+      double *D = D_chunk.data(), *weight = weight_chunk.data(), *pn = pn_chunk.data(),
+             *fn = fn_chunk.data();
       auto inputs = [=](int im, int i) {  // corner column i, the cells' columns im = i - 1 and i
         const double dxx = 0.25 * (xb[im] + xb[i] + xt[im] + xt[i]);
         const double dzz = 0.25 * (zb[im] + zb[i] + zt[im] + zt[i]);
         const double dxz = 0.5 * gr[i];
         const double Dv = std::sqrt(0.5 * (dxx * dxx + dzz * dzz) + dxz * dxz);
         const double D2 = Dv * Dv, part = dxz * dxz / D2;
-        D[i] = Dv;
-        weight[i] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
-        fn[i] = 0.25 * (fb[im] + fb[i] + ft[im] + ft[i]);
+        D[i - i0] = Dv;
+        weight[i - i0] = D2 > 0.0 ? (1.0 < part ? 1.0 : part) : 0.0;  // share()
+        fn[i - i0] = 0.25 * (fb[im] + fb[i] + ft[im] + ft[i]);
       };
       // (corner columns i0 .. i0 + n - 1, column 0 wrapping; one loop per kind of row: GCC does
       // not vectorise a select on the row's kind)
@@ -468,30 +470,31 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       columns(inputs);
       if (bed)  // linear extrapolation of the two lowest rows to the bed
         columns([=](int im, int i) {
-          pn[i] = 0.5 * (1.5 * (pb[im] + pb[i]) - 0.5 * (p1[im] + p1[i]));
+          pn[i - i0] = 0.5 * (1.5 * (pb[im] + pb[i]) - 0.5 * (p1[im] + p1[i]));
         });
       else if (top)
-        columns([=](int, int i) { pn[i] = 0.0; });  // p = 0 on the top boundary
+        columns([=](int, int i) { pn[i - i0] = 0.0; });  // p = 0 on the top boundary
       else
-        columns([=](int im, int i) { pn[i] = 0.25 * (pb[im] + pb[i] + pt[im] + pt[i]); });
+        columns([=](int im, int i) { pn[i - i0] = 0.25 * (pb[im] + pb[i] + pt[im] + pt[i]); });
       // Interface corners above the surface of their two columns are light fluid (`corner`):
       // fraction 0. The others, at the surface, go through `corner` after the chunk.
       std::array<double, kChunk> fraction_chunk;
-      double* fraction = fraction_chunk.data() - i0;
+      double* fraction = fraction_chunk.data();
       std::array<int, kChunk> at_surface;
       int surface_corners = 0;
       const double z = k * g.dz;
       for (int i = i0; i < i0 + n; ++i) {
-        fraction[i] = fn[i];
-        if (!(extrapolate && !bed && !top && fn[i] < 1.0 && fn[i] > 0.0)) continue;
+        const double fr = fn[i - i0];
+        fraction[i - i0] = fr;
+        if (!(extrapolate && !bed && !top && fr < 1.0 && fr > 0.0)) continue;
         const double h = 0.5 * (hcol[g.wrap(i - 1)] + hcol[i]);  // as in `corner`
         if (z < h)
           at_surface[surface_corners++] = i;
         else
-          fraction[i] = 0.0;
+          fraction[i - i0] = 0.0;
       }
-      model.mixture_with_tangent_many(std::span(fraction + i0, n), std::span(pn + i0, n),
-                                      std::span(D + i0, n), std::span(weight + i0, n),
+      model.mixture_with_tangent_many(std::span(fraction, n), std::span(pn, n), std::span(D, n),
+                                      std::span(weight, n),
                                       std::span(props.eta_n.data() + row + i0, n),
                                       std::span(props.eta_n_tangent.data() + row + i0, n));
       for (int j = 0; j < surface_corners; ++j) corner(at_surface[j], k);

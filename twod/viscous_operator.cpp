@@ -138,10 +138,10 @@ constexpr int kTransposeColumns = 8;
 
 void ViscousOperator::set_stress_weights(const std::vector<double>& eta_c,
                                          const std::vector<double>& eta_n) {
-  // Column by column (i nz + k for cells and u, i (nz + 1) + k for corners), so that the loops
-  // along a line read contiguous memory.
-  // In blocks of kTransposeColumns columns, the rows outermost within a block: each row's read
-  // of the block is one cache line, and the block's columns are written side by side.
+  // Into column order (i nz + k for cells and u, i (nz + 1) + k for corners), so that the loops
+  // along a line read contiguous memory; in blocks of kTransposeColumns columns with the rows
+  // outermost, so that each row's read of a block is one cache line and the block's columns are
+  // written side by side.
   const double V = g_.cell_volume();
   const int nx = g_.nx, nz = g_.nz;
   parallel_for((nx + kTransposeColumns - 1) / kTransposeColumns, true, [&](int block) {

@@ -42,6 +42,7 @@
 #include "twod/viscous_step.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -148,42 +149,72 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
   const bool limited = pressure_acceleration_ && acceleration_limit_ > 0.0;
   const double ix = 1.0 / g.dx, iz = 1.0 / g.dz;
   // the share of grad p^n that goes through the solve on a face of density rho (rho_before at
-  // the step before, when known), whose pressure difference over its spacing is dp_over_h
-  auto share = [&](double rho, double rho_before, double dp_over_h) {
-    double s = have_before && rho < rho_before ? rho / rho_before : 1.0;
-    if (limited && s * std::abs(dp_over_h) > acceleration_limit_ * rho)
-      s = acceleration_limit_ * rho / std::abs(dp_over_h);
-    return s;
+  // the step before, when known), whose pressure difference over its spacing is dp_over_h: the
+  // density ratio where the face lost mass, capped where the acceleration would pass the limit.
+  // Branch-free (both candidates computed, one selected: a lane's discarded division may be
+  // inf or NaN) so that the right-hand side's loop below vectorises.
+  const double limit = acceleration_limit_;
+  auto share = [=](double rho, double rho_before, double dp_over_h) {
+    const double shrunk = have_before && rho < rho_before ? rho / rho_before : 1.0;
+    const double a = std::abs(dp_over_h), capped = limit * rho / a;
+    return limited && shrunk * a > limit * rho ? capped : shrunk;
   };
   auto dp_u = [&](int i, int k) { return (s.p[g.at(i, k)] - s.p[g.at(i - 1, k)]) * ix; };
   auto dp_w = [&](int i, int k) { return (s.p[g.at(i, k)] - s.p[g.at(i, k - 1)]) * iz; };
   auto before_u = [&](std::size_t c) { return have_before ? props.rho_u_before[c] : 0.0; };
   auto before_w = [&](std::size_t c) { return have_before ? props.rho_w_before[c] : 0.0; };
   const double inv_dt = 1.0 / dt;
-  parallel_for(nz, true, [&](int k) {
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t c = g.at(i, k);
-      const int r = op_.u_index(i, k);
-      b_[r] =
-          props.rho_u[c] * V * (s.u[c] * inv_dt - adv_u[c]) +
-          (props.rho_u[c] - rho_ambient_) * V * gx_ -
-          share(props.rho_u[c], before_u(c), dp_u(i, k)) * g.dz * (s.p[c] - s.p[g.at(i - 1, k)]);
-      x_[r] = s.u[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
-      if (!force_u.empty()) b_[r] += force_u[c];
-    }
-  });
-  parallel_for(nz - 1, true, [&](int k_from_1) {
-    const int k = k_from_1 + 1;
-    for (int i = 0; i < nx; ++i) {
-      const std::size_t c = g.at(i, k);
-      const int r = op_.w_index(i, k);
-      b_[r] =
-          props.rho_w[c] * V * (s.w[c] * inv_dt - adv_w[c] + gz_) -
-          share(props.rho_w[c], before_w(c), dp_w(i, k)) * g.dx * (s.p[c] - s.p[g.at(i, k - 1)]);
-      x_[r] = s.w[c] + (have_increment ? guess_scale * increment_[r] : 0.0);
-      if (!force_w.empty()) b_[r] += force_w[c];
-    }
-  });
+  // The right-hand side row by row, in chunks: the faces' arithmetic in loops that vectorise,
+  // then the chunk into the unknowns' column order with the initial guess.
+  constexpr int kChunk = 128;
+  const double ambient = rho_ambient_, gx = gx_, gz = gz_;
+  const double dx = g.dx, dz = g.dz;
+  auto rows = [&](int k_begin, int k_end, bool u_faces) {
+    parallel_for(k_end - k_begin, true, [&](int k_offset) {
+      const int k = k_begin + k_offset;
+      const std::size_t row = std::size_t(k) * nx;
+      const std::vector<double>& before_all = u_faces ? props.rho_u_before : props.rho_w_before;
+      const std::vector<double>& force_all = u_faces ? force_u : force_w;
+      const double *rho = (u_faces ? props.rho_u : props.rho_w).data() + row,
+                   *v = (u_faces ? s.u : s.w).data() + row,
+                   *adv = (u_faces ? adv_u : adv_w).data() + row, *p = s.p.data() + row;
+      const double* rho_before = have_before ? before_all.data() + row : rho;  // (unused if not)
+      const double* force = force_all.empty() ? nullptr : force_all.data() + row;
+      for (int i0 = 0; i0 < nx; i0 += kChunk) {
+        const int n = std::min(kChunk, nx - i0);
+        std::array<double, kChunk> rhs_chunk;
+        double* rhs = rhs_chunk.data();
+        if (u_faces) {  // the pressure behind the face is the left cell's (column 0: nx - 1)
+          auto face = [=](int i, int il) {
+            const double carried = share(rho[i], rho_before[i], (p[i] - p[il]) * ix);
+            rhs[i - i0] = rho[i] * V * (v[i] * inv_dt - adv[i]) + (rho[i] - ambient) * V * gx -
+                          carried * dz * (p[i] - p[il]);
+          };
+          if (i0 == 0) face(0, nx - 1);
+#pragma omp simd
+          for (int i = std::max(i0, 1); i < i0 + n; ++i) face(i, i - 1);
+        } else {  // the pressure behind the face is the cell below's
+          const double* p_below = p - nx;
+#pragma omp simd
+          for (int i = i0; i < i0 + n; ++i) {
+            const double carried = share(rho[i], rho_before[i], (p[i] - p_below[i]) * iz);
+            rhs[i - i0] =
+                rho[i] * V * (v[i] * inv_dt - adv[i] + gz) - carried * dx * (p[i] - p_below[i]);
+          }
+        }
+        if (force)  // (added after the rest, as b_[r] += force was)
+#pragma omp simd
+          for (int i = i0; i < i0 + n; ++i) rhs[i - i0] += force[i];
+        for (int i = i0; i < i0 + n; ++i) {
+          const int r = u_faces ? op_.u_index(i, k) : op_.w_index(i, k);
+          b_[r] = rhs[i - i0];
+          x_[r] = v[i] + (have_increment ? guess_scale * increment_[r] : 0.0);
+        }
+      }
+    });
+  };
+  rows(0, nz, true);   // u faces
+  rows(1, nz, false);  // interior w faces
   // The explicit part of the linearised stress: b -= S(eta - eta_t) u^n (or the iterate `about`).
   if (tangent_) {
     as_unknowns(about ? *about : s, x_old_);

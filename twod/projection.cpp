@@ -23,7 +23,9 @@ namespace granbench::twod {
 
 double cell_divergence(const Grid& g, const std::vector<double>& u, const std::vector<double>& w,
                        int i, int k) {
-  return (u[g.at(i + 1, k)] - u[g.at(i, k)]) / g.dx + (w[g.at(i, k + 1)] - w[g.at(i, k)]) / g.dz;
+  const std::size_t row = std::size_t(k) * g.nx;
+  return cell_divergence(u.data() + row, w.data() + row, w.data() + row + g.nx, i, g.wrap(i + 1),
+                         g.dx, g.dz);
 }
 
 Projection::Projection(const Grid& g, const SolverParams& params)
@@ -62,8 +64,15 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
   b_.resize(n);
   if (x_.size() != n) x_.setZero(n);  // warm start: the previous step's increment
   // (grid loops parallel over rows or columns, each entry written once; parallel.hpp)
-  parallel_for(nz, true, [&](int k) {
-    for (int i = 0; i < nx; ++i) b_[id(i, k)] = -V * cell_divergence(g, u_star, w_star, i, k) / dt;
+  parallel_for(nz, true, [&](int k) {  // row by row, vectorised (b_ written across the columns)
+    const std::size_t row = std::size_t(k) * nx;
+    const double *u = u_star.data() + row, *w = w_star.data() + row, *w_above = w + nx;
+    double* b = b_.data() + k;
+    const double dx = g.dx, dz = g.dz;
+#pragma omp simd
+    for (int i = 0; i < nx - 1; ++i)
+      b[std::size_t(i) * nz] = -V * cell_divergence(u, w, w_above, i, i + 1, dx, dz) / dt;
+    b[std::size_t(nx - 1) * nz] = -V * cell_divergence(u, w, w_above, nx - 1, 0, dx, dz) / dt;
   });
   int iterations = 0;
   if (kind_ == LinearSolverKind::Multigrid) {

@@ -18,6 +18,7 @@
 
 #include "twod/parallel.hpp"
 #include "twod/pcg.hpp"
+#include "twod/periodic_row.hpp"
 
 namespace granbench::twod {
 
@@ -117,9 +118,7 @@ int Projection::project(const std::vector<double>& u_star, const std::vector<dou
       u[i] = us[i] - dt / rho[i] * (xk[std::size_t(i) * nz] - xk[std::size_t(il) * nz]) / dx;
       p[i] += xk[std::size_t(i) * nz];
     };
-    face(0, nx - 1);  // the periodic end
-#pragma omp simd
-    for (int i = 1; i < nx; ++i) face(i, i - 1);
+    for_columns_with_left(nx, 0, nx, [=](int il, int i) { face(i, il); });
   });
   parallel_for(nz + 1, true, [&](int k) {
     const std::size_t row = std::size_t(k) * nx;

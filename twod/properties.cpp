@@ -51,6 +51,7 @@
 
 #include "twod/fill_fraction.hpp"
 #include "twod/parallel.hpp"
+#include "twod/periodic_row.hpp"
 
 namespace granbench::twod {
 
@@ -240,19 +241,14 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
     // columns: a column-by-column scan strode through five arrays, 3 % of a 256 x 64 step.
     parallel_for_ranges(nx, [&](int i0, int i1) {
       auto row = [&](std::vector<int>& v, int k) { return v.data() + std::size_t(k) * nx; };
-      // i = 0 takes its left neighbour across the periodic end; the rest run contiguously
-      auto columns = [&](const double* fk, auto&& body) {
-        if (i0 == 0) body(0, fk[nx - 1]);
-#pragma omp simd
-        for (int i = std::max(i0, 1); i < i1; ++i) body(i, fk[i - 1]);
-      };
       for (int k = 0; k < nz; ++k) {  // upwards: the nearest full row at or below k
         const double* fk = f.data() + std::size_t(k) * nx;
         int *fc = row(full_below_c, k), *fn = row(full_below_n, k);
         const int *fc_below = row(full_below_c, std::max(k - 1, 0)),
                   *fn_below = row(full_below_n, std::max(k - 1, 0));
         const int none = -1;
-        columns(fk, [&](int i, double left) {
+        for_columns_with_left(nx, i0, i1, [&](int il, int i) {
+          const double left = fk[il];
           const int c_below = k > 0 ? fc_below[i] : none, n_below = k > 0 ? fn_below[i] : none;
           fc[i] = fk[i] == 1.0 ? k : c_below;
           fn[i] = left == 1.0 && fk[i] == 1.0 ? k : n_below;
@@ -264,7 +260,8 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
         const int *ec_above = row(empty_above_c, std::min(k + 1, nz - 1)),
                   *en_above = row(empty_above_n, std::min(k + 1, nz - 1));
         const int none = nz;
-        columns(fk, [&](int i, double left) {
+        for_columns_with_left(nx, i0, i1, [&](int il, int i) {
+          const double left = fk[il];
           const int c_above = k < nz - 1 ? ec_above[i] : none,
                     n_above = k < nz - 1 ? en_above[i] : none;
           ec[i] = fk[i] == 0.0 ? k : c_above;
@@ -462,11 +459,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
       };
       // (corner columns i0 .. i0 + n - 1, column 0 wrapping; one loop per kind of row: GCC does
       // not vectorise a select on the row's kind)
-      auto columns = [&](auto&& body) {
-        if (i0 == 0) body(nx - 1, 0);
-#pragma omp simd
-        for (int i = std::max(i0, 1); i < i0 + n; ++i) body(i - 1, i);
-      };
+      auto columns = [&](auto&& body) { for_columns_with_left(nx, i0, i0 + n, body); };
       columns(inputs);
       if (bed)  // linear extrapolation of the two lowest rows to the bed
         columns([=](int im, int i) {

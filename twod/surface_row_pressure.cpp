@@ -58,6 +58,7 @@
 #include <cmath>
 
 #include "twod/parallel.hpp"
+#include "twod/periodic_row.hpp"
 
 namespace granbench::twod {
 
@@ -80,9 +81,7 @@ void surface_row_pressure_correction(const Grid& g, const SolverParams& params,
         const double v = fc[i], d = below(i) - above(i);
         return (d < -1.0 ? -1.0 : (1.0 < d ? 1.0 : d)) * v * (1.0 - v);
       };
-      out[0] = scale * (m(0) - m(nx - 1));  // the periodic end
-#pragma omp simd
-      for (int i = 1; i < nx; ++i) out[i] = scale * (m(i) - m(i - 1));
+      for_columns_with_left(nx, 0, nx, [=](int il, int i) { out[i] = scale * (m(i) - m(il)); });
     };
     // (one loop per kind of row: GCC does not vectorise a select on the row's kind)
     const double *fb = k > 0 ? fc - nx : fc, *fa = k + 1 < nz ? fc + nx : fc;

@@ -49,6 +49,7 @@
 #include "twod/explicit_stress_limit.hpp"
 #include "twod/parallel.hpp"
 #include "twod/pcg.hpp"
+#include "twod/periodic_row.hpp"
 
 namespace granbench::twod {
 
@@ -190,9 +191,7 @@ int ViscousStep::predict(const Fields& s, const Properties& props, const std::ve
             rhs[i - i0] = rho[i] * V * (v[i] * inv_dt - adv[i]) + (rho[i] - ambient) * V * gx -
                           carried * dz * (p[i] - p[il]);
           };
-          if (i0 == 0) face(0, nx - 1);
-#pragma omp simd
-          for (int i = std::max(i0, 1); i < i0 + n; ++i) face(i, i - 1);
+          for_columns_with_left(nx, i0, i0 + n, [=](int il, int i) { face(i, il); });
         } else {  // the pressure behind the face is the cell below's
           const double* p_below = p - nx;
 #pragma omp simd

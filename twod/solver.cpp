@@ -124,7 +124,8 @@ double Solver::step(double dt_limit) {
   // The thread count belongs to the calling thread: set it for whichever thread steps.
   if (params_.threads >= 1 && params_.threads != thread_count()) set_thread_count(params_.threads);
   double dt_full = choose_time_step(g_, s_, params_, stats_.dt_last);
-  if (stats_.dt_last <= 0.0) dt_full = std::min(dt_full, params_.dt_initial);
+  if (stats_.dt_last <= 0.0 && params_.dt_initial > 0.0)
+    dt_full = std::min(dt_full, params_.dt_initial);
   double dt = dt_full;
   if (dt_limit <= dt_full * (1.0 + 1e-9))
     dt = dt_limit;

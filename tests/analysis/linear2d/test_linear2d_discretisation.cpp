@@ -152,19 +152,28 @@ TEST(Linear2DSpectrum, NearestModeWithoutQzIsTheConfirmedNearest) {
     }
 }
 
-// The seed's surface mode is the one linear_stability_2d reports, computed alone.
+// The seed's surface mode is the one linear_stability_2d reports, computed alone. surface_mode
+// reaches it by inverse iteration, not from the Schur decomposition, so the two eigenvalues agree
+// to round-off (measured 4e-16 to 5e-15, against 1e-13 here), not bitwise, and the eigenvectors
+// agree up to their arbitrary complex factor: compared normalised by the surface displacement, as
+// the seed uses them (Eigenmode). The lengths include the 2 cm wave, whose slow branch is the more
+// unstable mode, and one beside the 2D cutoff (1.3 cm), where the surface mode's growth is small.
 TEST(Linear2DSpectrum, SurfaceModeAloneIsTheReportedSurfaceMode) {
   const Material m;
   const MuCurve curve(CurveKind::Regularised, m, 4e-3);
   const SteadyState s = steady_state(curve, degrees_to_radians(28.5), 4e-3);
-  for (double Lx : {0.02, 0.08, 0.3}) {
+  for (double Lx : {0.013, 0.02, 0.08, 0.3}) {
     Linear2DOptions opt;
     opt.N_check = 0;
     const Linear2DResult r = linear_stability_2d(s, curve, Lx, opt);
     const Eigenpair alone = surface_mode(r.base, r.k_hat, opt.N, opt.map, opt.path);
-    EXPECT_EQ(alone.lambda, r.surface.lambda_hat) << "Lx = " << Lx;
+    EXPECT_LT(std::abs(alone.lambda - r.surface.lambda_hat), 1e-13 * std::abs(r.surface.lambda_hat))
+        << "Lx = " << Lx;
     EXPECT_LT(alone.residual, 1e-12) << "Lx = " << Lx;
-    EXPECT_LT((alone.v - r.surface_pair.v).norm(), 1e-12) << "Lx = " << Lx;
+    const Eigen::Index surface = alone.v.size() - 1;  // the displacement's unknown
+    const Eigen::VectorXcd v = alone.v / alone.v(surface);
+    const Eigen::VectorXcd reported = r.surface_pair.v / r.surface_pair.v(surface);
+    EXPECT_LT((v - reported).norm(), 1e-11 * reported.norm()) << "Lx = " << Lx;
   }
 }
 

@@ -24,8 +24,9 @@ RealFFT::RealFFT(std::size_t n) : n_(n) {
   spec_ = spec;
   const int len = static_cast<int>(n);
   fwd_ = fftw_plan_dft_r2c_1d(len, real_, spec, FFTW_ESTIMATE);
-  inv_ = fftw_plan_dft_c2r_1d(len, spec, real_, FFTW_ESTIMATE);
-  if (!fwd_ || !inv_) throw std::runtime_error("RealFFT: FFTW planning failed");
+  if (!fwd_) throw std::runtime_error("RealFFT: FFTW planning failed");
+  // The inverse plan waits for the first inverse(): the measurements only go forward, and each
+  // plan took about a millisecond of a 0.2-s run's start (docs/performance.md).
 }
 
 RealFFT::~RealFFT() {
@@ -49,6 +50,11 @@ std::vector<std::complex<double>> RealFFT::forward(std::span<const double> x) {
 std::vector<double> RealFFT::inverse(std::span<const std::complex<double>> X) {
   if (X.size() != n_ / 2 + 1) throw std::invalid_argument("RealFFT::inverse: wrong length");
   auto* s = static_cast<fftw_complex*>(spec_);
+  if (!inv_) {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    inv_ = fftw_plan_dft_c2r_1d(static_cast<int>(n_), s, real_, FFTW_ESTIMATE);
+    if (!inv_) throw std::runtime_error("RealFFT: FFTW planning failed");
+  }
   for (std::size_t m = 0; m < X.size(); ++m) {
     s[m][0] = X[m].real();
     s[m][1] = X[m].imag();

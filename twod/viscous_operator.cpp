@@ -276,6 +276,7 @@ void ViscousOperator::apply_u_column(int i, const Eigen::VectorXd& x, Eigen::Vec
   const double* xw_left = &x[nu_ + il * nzw - 1];
   double* yu = &y[i * nz];
   const double ixx = ixx_, izz = izz_, ixz = ixz_;
+#pragma omp simd  // (y is never x: no run-time overlap checks)
   for (int k = 1; k < nz - 1; ++k) {
     const double below = kn[k], above = kn[k + 1];
     double sum = (mass[k] + (kc[k] + kc_left[k]) * ixx + (below + above) * izz) * xu[k];
@@ -312,6 +313,7 @@ void ViscousOperator::apply_w_column(int i, const Eigen::VectorXd& x, Eigen::Vec
   const double* xu_right = &x[ir * nz];
   double* yw = &y[nu_ + i * nzw - 1];
   const double ixx = ixx_, izz = izz_, ixz = ixz_;
+#pragma omp simd  // (y is never x)
   for (int k = 2; k < nz - 1; ++k) {
     const double here = kn[k], right = kn_right[k];
     double sum = (mass[k - 1] + (kc[k] + kc[k - 1]) * izz + (here + right) * ixx) * xw[k];
@@ -382,6 +384,7 @@ void ViscousOperator::u_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorX
   const double* zw_left = &z[nu_ + il * nzw - 1];
   double* zu = &z[i * nz];
   const double ixx = ixx_, ixz = ixz_;
+#pragma omp simd  // (writes this column's u entries of z; reads only other entries)
   for (int k = 1; k < nz - 1; ++k) {
     const double below = kn[k], above = kn[k + 1];
     double rhs = ri[k];
@@ -416,6 +419,7 @@ void ViscousOperator::w_line_rhs(int i, const Eigen::VectorXd& r, Eigen::VectorX
   const double* zu_right = &z[ir * nz];
   double* zw = &z[nu_ + i * nzw - 1];
   const double ixx = ixx_, ixz = ixz_;
+#pragma omp simd  // (writes this column's w entries of z; reads only other entries)
   for (int k = 2; k < nz - 1; ++k) {
     const double here = kn[k], right = kn_right[k];
     double rhs = rw[k];

@@ -421,10 +421,15 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
     const double* xl = &x[L.cell(il, 0)];
     const double* xr = &x[L.cell(ir, 0)];
     double* rci = &rc[C.cell(ic, 0)];
+    // (omp simd: rc is never x, so GCC need not check the columns for overlap at run time;
+    // with the prolongation's loop the transfers went from 3.5 % to 3.2 % of a one-thread
+    // 160 x 16 step, near the profiles' scatter)
     if (x_alone) {
+#pragma omp simd
       for (int k = 0; k < C.nz; ++k) rci[k] = cl[k] * xl[k] + cr[k] * xr[k];
       return;
     }
+#pragma omp simd
     for (int kc = 0; kc < C.nz; ++kc) {
       const int k = 2 * kc;
       rci[kc] = (cl[k] * xl[k] + cr[k] * xr[k]) + (cl[k + 1] * xl[k + 1] + cr[k + 1] * xr[k + 1]);
@@ -435,9 +440,10 @@ void PressureMultigrid::vcycle(std::size_t l, const Eigen::VectorXd& b, Eigen::V
   parallel_for(L.nx, parallel, [&](int i) {  // P: piecewise constant
     double* xi = &x[L.cell(i, 0)];
     const double* xci = &xc[C.cell(i / 2, 0)];
-    if (x_alone)
+    if (x_alone) {
+#pragma omp simd  // (xc is never x)
       for (int k = 0; k < L.nz; ++k) xi[k] += xci[k];
-    else
+    } else
       for (int k = 0; k < L.nz; ++k) xi[k] += xci[k / 2];
   });
   line_sweep(L, b, x, false, false);

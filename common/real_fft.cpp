@@ -25,8 +25,8 @@ RealFFT::RealFFT(std::size_t n) : n_(n) {
   const int len = static_cast<int>(n);
   fwd_ = fftw_plan_dft_r2c_1d(len, real_, spec, FFTW_ESTIMATE);
   if (!fwd_) throw std::runtime_error("RealFFT: FFTW planning failed");
-  // The inverse plan waits for the first inverse(): the measurements only go forward, and each
-  // plan took about a millisecond of a 0.2-s run's start (docs/performance.md).
+  // The inverse plan waits for the first inverse(): the measurements only go forward, and a
+  // process's first complex-to-real plan took 1.2-1.7 ms (docs/performance.md).
 }
 
 RealFFT::~RealFFT() {

@@ -107,9 +107,9 @@ struct SolverParams {
   double dt_max = 1e-3;  // [s]
   // Cap of the first step [s]; 0: none, the CFL step of the initial state. Every seeded run
   // starts from the steady flow, whose CFL step holds from the first step on (a 1e-5 s start
-  // grown by dt_growth added about 27 steps to the first 3 ms, 8 % of the Gerris comparison's
-  // 0.1 s, and moved the growth rates by under 1e-6 of themselves; docs/performance.md). A flow
-  // at rest gets dt_max, a step that the CFL limit and dt_growth then follow.
+  // grown by dt_growth added 27 steps to the first 3 ms, 8 % of the Gerris comparison's 0.1 s;
+  // the §7 growth rate moved by under 1e-6 of itself, docs/twod-validation.md has the rest). A
+  // flow at rest gets dt_max, a step that the CFL limit and dt_growth then follow.
   double dt_initial = 0.0;
   double dt_growth = 1.1;           // largest ratio dt_{n+1}/dt_n
   double solver_tolerance = 1e-10;  // relative residual of the projection (sets div u, mass)

@@ -20,6 +20,7 @@
 #include "twod/initial_state.hpp"
 #include "twod/run.hpp"
 #include "twod/solver.hpp"
+#include "twod/time_step.hpp"
 
 using namespace granbench;
 using namespace granbench::twod;
@@ -97,6 +98,22 @@ TEST(RunControl, CheckpointRestartContinuesIdenticallyWithTheMidStepInterfaceVel
   expect_restart_continues_identically(c);
 }
 
+// The first step is the CFL step of the initial state: a seeded run starts from the steady flow,
+// whose CFL step holds at once (the 1e-5 s start grown by 10 % a step took 27 extra steps of the
+// Gerris comparison's 320; docs/performance.md). dt_initial, when set, caps the first step.
+TEST(RunControl, TheFirstStepIsTheCflStepUnlessCapped) {
+  Case c;
+  ASSERT_EQ(c.params.dt_initial, 0.0);  // the default: no cap
+  Solver solver(c.grid, c.params, make_initial_state(c.grid, c.ic, c.params));
+  const double cfl_step = choose_time_step(c.grid, solver.state(), c.params, 0.0);
+  ASSERT_LT(cfl_step, c.params.dt_max);  // the flow's CFL limit, not dt_max, sets it
+  EXPECT_EQ(solver.step(1.0), cfl_step);
+  c.params.dt_initial = 0.25 * cfl_step;
+  Solver capped(c.grid, c.params, make_initial_state(c.grid, c.ic, c.params));
+  EXPECT_EQ(capped.step(1.0), 0.25 * cfl_step);
+  EXPECT_LE(capped.step(1.0), c.params.dt_growth * 0.25 * cfl_step);  // then grows from there
+}
+
 // Output times every 3.3 steps or so: the step before each output time is never a sliver. The
 // solver takes the remainder when it is at most one step and two equal halves when it is
 // between one and two steps, so no step is shorter than half the CFL step (a 1e-8 s step
@@ -104,7 +121,7 @@ TEST(RunControl, CheckpointRestartContinuesIdenticallyWithTheMidStepInterfaceVel
 TEST(RunControl, NoSliverStepsBeforeOutputTimes) {
   Case c;
   Solver solver(c.grid, c.params, make_initial_state(c.grid, c.ic, c.params));
-  solver.advance_to(0.02);  // past the start-up ramp of dt
+  solver.advance_to(0.02);  // past the first steps
   const double dt_cfl = solver.step(1.0);
   double shortest = dt_cfl;
   int steps = 0;

@@ -308,34 +308,41 @@ void solve_column_group(const PoissonLevel& L, const Eigen::VectorXd& b, Eigen::
     right[j] = std::size_t(L.cell(i == nx - 1 ? 0 : i + 1, 0));
   }
   const std::size_t base = std::size_t(colour * L.line_groups + g) * nz * kLineLanes;
-  auto coefficient = [base](const std::vector<double>& v, int k) {
+  // Raw pointers, taken once: through the vectors the loops reloaded each array's address on
+  // every row (a store through memcpy may alias anything, so GCC could not keep them).
+  const double *line_cl = &L.line_cl[base], *line_cr = &L.line_cr[base],
+               *line_cz = &L.line_cz[base], *line_inv_m = &L.line_inv_m[base],
+               *line_cp = &L.line_cp[base];
+  double* work = &L.line_work[base];
+  const double* bv = b.data();
+  double* xv = x.data();
+  auto coefficient = [](const double* v, int k) {
     LineVector r;
-    __builtin_memcpy(&r, &v[base + std::size_t(k) * kLineLanes], sizeof r);
+    __builtin_memcpy(&r, v + std::size_t(k) * kLineLanes, sizeof r);
     return r;
   };
-  auto gather = [](const Eigen::VectorXd& v, const std::size_t(&start)[kLineLanes], int k) {
+  auto gather = [](const double* v, const std::size_t(&start)[kLineLanes], int k) {
     LineVector r;
     for (int j = 0; j < kLineLanes; ++j) r[j] = v[start[j] + k];
     return r;
   };
-  double* work = &L.line_work[base];
   LineVector d = {};
   for (int k = 0; k < nz; ++k) {
     const LineVector rhs = zero_neighbours
-                               ? gather(b, at, k)
-                               : gather(b, at, k) + coefficient(L.line_cl, k) * gather(x, left, k) +
-                                     coefficient(L.line_cr, k) * gather(x, right, k);
-    d = (rhs + coefficient(L.line_cz, k) * d) * coefficient(L.line_inv_m, k);
+                               ? gather(bv, at, k)
+                               : gather(bv, at, k) + coefficient(line_cl, k) * gather(xv, left, k) +
+                                     coefficient(line_cr, k) * gather(xv, right, k);
+    d = (rhs + coefficient(line_cz, k) * d) * coefficient(line_inv_m, k);
     __builtin_memcpy(work + std::size_t(k) * kLineLanes, &d, sizeof d);
   }
   LineVector next = d;  // row nz - 1: the forward value is final
-  for (int j = 0; j < kLineLanes; ++j) x[at[j] + nz - 1] = next[j];
+  for (int j = 0; j < kLineLanes; ++j) xv[at[j] + nz - 1] = next[j];
   for (int k = nz - 2; k >= 0; --k) {
     LineVector xk;
     __builtin_memcpy(&xk, work + std::size_t(k) * kLineLanes, sizeof xk);
-    xk -= coefficient(L.line_cp, k) * next;
+    xk -= coefficient(line_cp, k) * next;
     next = xk;
-    for (int j = 0; j < kLineLanes; ++j) x[at[j] + k] = xk[j];
+    for (int j = 0; j < kLineLanes; ++j) xv[at[j] + k] = xk[j];
   }
 }
 #pragma GCC diagnostic pop

@@ -1,15 +1,17 @@
-// MPI for the sweep's processes; see mpi_session.hpp. Collectives move plain arrays of doubles:
-// sizes first (MPI_Bcast, MPI_Gather), then the values (MPI_Bcast, MPI_Gatherv).
+// MPI for the sweep's processes, through the MPI module loaded on demand; see mpi_session.hpp.
+// Collectives move plain arrays of doubles: sizes first, then the values.
 #include "analysis/cli/mpi_session.hpp"
 
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
+#include <string>
 
-#ifdef GRANBENCH_HAVE_MPI
-#define OMPI_SKIP_MPICXX 1  // the C API only
-#define MPICH_SKIP_MPICXX 1
-#include <mpi.h>
+#ifdef GRANBENCH_MPI_MODULE
+#include <dlfcn.h>
+
+#include "analysis/cli/mpi_module.hpp"
+#include "analysis/cli/shipped_files.hpp"
 #endif
 
 namespace granbench::cli {
@@ -24,55 +26,68 @@ bool started_by_mpirun() {
 }
 }  // namespace
 
-#ifdef GRANBENCH_HAVE_MPI
+#ifdef GRANBENCH_MPI_MODULE
+
+namespace {
+// The module, loaded once per process and kept: MPI cannot be started again after MPI_Finalize,
+// and unloading libmpi under its own exit handlers is not safe.
+const granbench_mpi_api* load_mpi_module() {
+  const std::string path = shipped_mpi_module();
+  // RTLD_GLOBAL: OpenMPI loads its components as plugins that look up libmpi's symbols globally.
+  void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_GLOBAL);
+  if (!module) {
+    const char* why = dlerror();
+    throw std::runtime_error("started by mpirun, but the MPI module " + path +
+                             " could not be loaded: " + (why ? why : "unknown reason") +
+                             " (build granbench again with libopenmpi-dev installed)");
+  }
+  auto entry = reinterpret_cast<granbench_mpi_module_fn>(dlsym(module, "granbench_mpi_module"));
+  if (!entry) throw std::runtime_error("the MPI module " + path + " has no granbench_mpi_module");
+  return entry();
+}
+}  // namespace
 
 MpiSession::MpiSession() : exceptions_(std::uncaught_exceptions()) {
   if (!started_by_mpirun()) return;
-  int provided = 0;
-  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
-  active_ = true;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  static const granbench_mpi_api* const module = load_mpi_module();
+  module->init(&rank_, &size_);
+  mpi_ = module;
 }
 
 MpiSession::~MpiSession() {
-  if (!active_) return;
-  if (std::uncaught_exceptions() > exceptions_) MPI_Abort(MPI_COMM_WORLD, 1);
-  MPI_Finalize();
+  if (mpi_) mpi_->finalize(std::uncaught_exceptions() > exceptions_ ? 1 : 0);
 }
 
 std::vector<double> MpiSession::broadcast(std::vector<double> values) const {
-  if (!active_) return values;
-  long n = static_cast<long>(values.size());
-  MPI_Bcast(&n, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+  if (!mpi_) return values;
+  const long n = mpi_->broadcast_size(static_cast<long>(values.size()));
   values.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(values.data(), static_cast<int>(n), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  mpi_->broadcast_values(values.data(), n);
   return values;
 }
 
 std::vector<double> MpiSession::gather(const std::vector<double>& values) const {
-  if (!active_) return values;
-  int n = static_cast<int>(values.size());
+  if (!mpi_) return values;
+  const int n = static_cast<int>(values.size());
   std::vector<int> counts(root() ? size_ : 0), offsets(counts.size());
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  mpi_->gather_sizes(n, counts.data());
   std::vector<double> all;
   if (root()) {
     for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
     all.resize(static_cast<std::size_t>(offsets.back() + counts.back()));
   }
-  MPI_Gatherv(values.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-              0, MPI_COMM_WORLD);
+  mpi_->gather_values(values.data(), n, all.data(), counts.data(), offsets.data());
   return all;
 }
 
 void MpiSession::barrier() const {
-  if (active_) MPI_Barrier(MPI_COMM_WORLD);
+  if (mpi_) mpi_->barrier();
 }
 
 #else  // built without MPI: one process
 
 MpiSession::MpiSession() : exceptions_(std::uncaught_exceptions()) {
-  (void)active_;
+  (void)mpi_;
   (void)exceptions_;
   // Every process would run every point and write the same file.
   if (started_by_mpirun())

@@ -28,4 +28,17 @@ std::string shipped_plot_dir() {
   return shipped_dir("plots", GRANBENCH_PLOT_DIR);
 }
 
+#ifdef GRANBENCH_MPI_MODULE
+std::string shipped_mpi_module() {
+  std::error_code ec;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed =
+        program.parent_path().parent_path() / "lib" / "granbench" / "libgranbench_mpi.so";
+    if (std::filesystem::is_regular_file(installed, ec)) return installed.string();
+  }
+  return GRANBENCH_MPI_MODULE;
+}
+#endif
+
 }  // namespace granbench::cli

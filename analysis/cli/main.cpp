@@ -14,6 +14,7 @@
 #include "analysis/cli/cli_common.hpp"
 #include "analysis/cli/commands.hpp"
 #include "analysis/cli/config_file.hpp"
+#include "analysis/cli/heap_pages.hpp"
 #include "analysis/cli/shipped_files.hpp"
 #include "analysis/cli/suggest.hpp"
 #include "common/provenance.hpp"
@@ -69,6 +70,7 @@ std::string with_origin(const std::string& message, const ExpandedArgs& expanded
 }  // namespace
 
 int main(int argc, char** argv) {
+  granbench::cli::use_huge_pages_for_the_heap();
   CLI::App app{"granbench: depth-averaged and 2D mu(I) chute flows against exact theory"};
   app.require_subcommand(1);
   app.footer(kFooter);

@@ -1,6 +1,7 @@
 // An installed granbench (`cmake --install`) runs without its source and build trees: it finds
-// its case files and plotting scripts under <prefix>/share/granbench (shipped_files.hpp), and
-// the build tree's command still finds them in the source tree.
+// its case files and plotting scripts under <prefix>/share/granbench (shipped_files.hpp), and its
+// MPI module, when built, under <prefix>/lib/granbench; the build tree's command still finds them
+// in the source and build trees.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -27,6 +28,9 @@ TEST(Install, TheInstalledCommandFindsItsCasesAndPlotsUnderItsPrefix) {
   ASSERT_TRUE(fs::exists(program));
   EXPECT_TRUE(fs::exists(share / "cases" / "rollwave-8cm.toml"));
   EXPECT_TRUE(fs::exists(share / "plots" / "dispersion.py"));
+#ifdef GRANBENCH_MPI_MODULE_NAME
+  EXPECT_TRUE(fs::exists(prefix / "lib" / "granbench" / GRANBENCH_MPI_MODULE_NAME));
+#endif
 
   const auto version = run_shell(program + " --version", "install_version");
   ASSERT_EQ(version.code, 0) << version.err;

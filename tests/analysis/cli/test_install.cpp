@@ -64,4 +64,18 @@ TEST(Install, TheBuildTreesCommandFindsThemInTheSourceTree) {
       << version.out;
 }
 
+// What the command loads at every start (docs/performance.md, forty-fifth session): no MPI library
+// (its calls are in the module that only a process started by mpirun loads) and, with
+// GRANBENCH_STATIC_LIBS, none of the libraries linked from their archives.
+TEST(Install, TheCommandLoadsNoMpiAndNoArchivedLibraryAtItsStart) {
+  const auto libraries =
+      run_shell(std::string("ldd ") + GRANBENCH_BINARY_DIR + "/granbench", "install_ldd");
+  ASSERT_EQ(libraries.code, 0) << libraries.err;
+  EXPECT_EQ(libraries.out.find("libmpi"), std::string::npos) << libraries.out;
+#ifdef GRANBENCH_STATIC_LIBS_ON
+  for (const char* archived : {"libsundials", "libfftw3", "libgsl", "libsz", "libz.", "libstdc++"})
+    EXPECT_EQ(libraries.out.find(archived), std::string::npos) << archived << "\n" << libraries.out;
+#endif
+}
+
 }  // namespace

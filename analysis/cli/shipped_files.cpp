@@ -7,16 +7,24 @@
 namespace granbench::cli {
 
 namespace {
-// <prefix>/share/granbench/<kind> where the program runs from <prefix>/bin and that directory
-// exists; otherwise `source_tree_dir` (the build tree's program).
-std::string shipped_dir(const char* kind, const char* source_tree_dir) {
+// <prefix>/<relative> where the program runs from <prefix>/bin and that path exists (`is_there`
+// checks it); otherwise `build_tree_path` (the build tree's program).
+template <class IsThere>
+std::string installed_or(const std::filesystem::path& relative, const char* build_tree_path,
+                         IsThere&& is_there) {
   std::error_code ec;
   const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (!ec) {
-    const auto installed = program.parent_path().parent_path() / "share" / "granbench" / kind;
-    if (std::filesystem::is_directory(installed, ec)) return installed.string();
+    const auto installed = program.parent_path().parent_path() / relative;
+    if (is_there(installed, ec)) return installed.string();
   }
-  return source_tree_dir;
+  return build_tree_path;
+}
+
+// <prefix>/share/granbench/<kind>, or `source_tree_dir`.
+std::string shipped_dir(const char* kind, const char* source_tree_dir) {
+  return installed_or(std::filesystem::path("share") / "granbench" / kind, source_tree_dir,
+                      [](const auto& p, auto& ec) { return std::filesystem::is_directory(p, ec); });
 }
 }  // namespace
 
@@ -30,14 +38,9 @@ std::string shipped_plot_dir() {
 
 #ifdef GRANBENCH_MPI_MODULE
 std::string shipped_mpi_module() {
-  std::error_code ec;
-  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const auto installed =
-        program.parent_path().parent_path() / "lib" / "granbench" / "libgranbench_mpi.so";
-    if (std::filesystem::is_regular_file(installed, ec)) return installed.string();
-  }
-  return GRANBENCH_MPI_MODULE;
+  return installed_or(
+      std::filesystem::path("lib") / "granbench" / "libgranbench_mpi.so", GRANBENCH_MPI_MODULE,
+      [](const auto& p, auto& ec) { return std::filesystem::is_regular_file(p, ec); });
 }
 #endif
 

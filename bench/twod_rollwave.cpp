@@ -23,7 +23,6 @@
 // cores). The results are identical for every thread count (twod/parallel.hpp); only the times
 // differ. Timing on a loaded machine is meaningless: check `uptime` first.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -34,10 +33,7 @@
 #include <thread>
 #include <vector>
 
-#ifdef __linux__
-#include <sched.h>
-#endif
-
+#include "bench/core_placement.hpp"
 #include "common/steady_state.hpp"
 #include "twod/diagnostics.hpp"
 #include "twod/initial_state.hpp"
@@ -46,6 +42,8 @@
 
 using namespace granbench;
 using namespace granbench::twod;
+using granbench::bench::available_cpus;
+using granbench::bench::core_round_trip_ns;
 
 namespace {
 
@@ -81,46 +79,6 @@ double triad_bandwidth(int threads) {
   volatile double sink = a[n / 2];  // keep the stores
   (void)sink;
   return 3.0 * 8.0 * double(n) / best / 1e9;
-}
-
-// The CPUs this process may run on (its affinity mask, e.g. under taskset), which can be fewer
-// than the machine's hardware threads.
-int available_cpus() {
-#ifdef __linux__
-  cpu_set_t set;
-  if (sched_getaffinity(0, sizeof(set), &set) == 0) return CPU_COUNT(&set);
-#endif
-  return int(std::max(1u, std::thread::hardware_concurrency()));
-}
-
-// Round trip of one cache line between two threads (each waits for the other's store), in ns:
-// the median of 9 repetitions of 100 000 round trips. Both threads spin without yielding, so it
-// needs two CPUs: on one, every trip would wait for the scheduler to switch threads (minutes).
-double core_round_trip_ns() {
-  std::vector<double> times;
-  for (int rep = 0; rep < 9; ++rep) {
-    constexpr int kTrips = 100000;
-    alignas(64) std::atomic<int> ball{0};
-    std::thread partner([&] {
-      for (int i = 0; i < kTrips; ++i) {
-        while (ball.load(std::memory_order_acquire) != 2 * i + 1) {
-        }
-        ball.store(2 * i + 2, std::memory_order_release);
-      }
-    });
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < kTrips; ++i) {
-      ball.store(2 * i + 1, std::memory_order_release);
-      while (ball.load(std::memory_order_acquire) != 2 * i + 2) {
-      }
-    }
-    times.push_back(
-        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
-        kTrips);
-    partner.join();
-  }
-  std::nth_element(times.begin(), times.begin() + 4, times.end());
-  return times[4];
 }
 
 nlohmann::json run(int nx, int nz, double t_end, int threads, double frame_fraction) {

@@ -30,10 +30,10 @@ ThreadTeam& team_of_this_thread(int threads) {
   return *team;
 }
 
-void run_loop(int n, Schedule schedule, IndexBody body) {
+void run_loop(int n, IndexBody body) {
   const int threads = thread_count();
   if (n > 1 && threads > 1 && !ThreadTeam::inside_a_loop())
-    team_of_this_thread(threads).run(n, schedule, body, body.identity());
+    team_of_this_thread(threads).run(n, body, body.identity());
   else
     for (int i = 0; i < n; ++i) body(i);
 }
@@ -58,13 +58,9 @@ void set_thread_count(int n) {
 
 void parallel_for(int n, bool parallel, IndexBody body) {
   if (parallel)
-    run_loop(n, Schedule::Contiguous, body);
+    run_loop(n, body);
   else
     for (int i = 0; i < n; ++i) body(i);
-}
-
-void parallel_for_interleaved(int n, IndexBody body) {
-  run_loop(n, Schedule::Interleaved, body);
 }
 
 void parallel_for_ranges(int n, RangeBody body) {

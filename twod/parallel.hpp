@@ -28,14 +28,6 @@ int thread_count();
 // Set it for the calling thread (n >= 1).
 void set_thread_count(int n);
 
-// How parallel_for shares an index range among the threads. The shares' sizes follow each
-// thread's measured speed at that loop, equal at first (thread_team.hpp, share_balance.hpp).
-enum class Schedule {
-  Contiguous,   // each thread one contiguous block
-  Interleaved,  // each thread indices spread evenly over the whole range (balances rows whose
-                // work varies with height)
-};
-
 // A non-owning reference to a callable body(Args...), the body of a parallel loop (a plain
 // function call, so that the threading stays in parallel.cpp).
 template <class... Args>
@@ -62,8 +54,6 @@ using RangeBody = BodyRef<int, int>;  // body(begin, end)
 // true and more than one thread is set; otherwise, or when called from inside another parallel
 // loop, a plain loop on the calling thread.
 void parallel_for(int n, bool parallel, IndexBody body);
-// The same with interleaved shares, always threaded when more than one thread is set.
-void parallel_for_interleaved(int n, IndexBody body);
 // body(begin, end) once per thread with a non-empty contiguous share of [0, n) (body(0, n) on
 // one thread): for element-wise loops, whose inner loop the compiler vectorises (a call per element
 // through IndexBody would not be).

@@ -330,15 +330,18 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   };
   // Cell (i, k) takes the Extrapolated rule's interface treatment.
   auto interface_cell = [&](std::size_t c) { return extrapolate && f[c] < 1.0 && f[c] > 0.0; };
-  // Rows spread over the threads (interleaved): mu(I) is evaluated only below the surface, so
-  // contiguous blocks of rows gave one thread the grains and the other the light fluid. Each row
-  // goes in chunks: strain rates, |D| and the shares of a chunk in one vectorised loop (`cell`'s
-  // expressions; its last column wraps to column 0), then the viscosities of the chunk
-  // (mixture_with_tangent_many), then the interface cells one by one. Scalar, cell by cell, this
-  // was 15 % of a one-thread 256 x 64 step.
+  // Rows in contiguous blocks per thread, whose sizes the team's balance sets by each block's
+  // measured time (mu(I) is evaluated only below the surface, so equal blocks would give one
+  // thread the grains and the other the light fluid; rows dealt out interleaved made both
+  // threads write into every row's neighbours, which costs more on cores far apart than the
+  // imbalance did: docs/performance.md, forty-sixth session). Each row goes in chunks: strain
+  // rates, |D| and the shares of a chunk in one vectorised loop (`cell`'s expressions; its last
+  // column wraps to column 0), then the viscosities of the chunk (mixture_with_tangent_many), then
+  // the interface cells one by one. Scalar, cell by cell, this was 15 % of a one-thread 256 x 64
+  // step.
   constexpr int kChunk = 128;
   const double* fd = f.data();
-  parallel_for_interleaved(nz, [&](int k) {
+  parallel_for(nz, true, [&](int k) {
     const std::size_t row = std::size_t(k) * nx, above = row + nx;
     const double *ur = u.data() + row, *wr = w.data() + row, *wa = w.data() + above,
                  *pr = p.data() + row, *gr = gam.data() + row, *ga = gam.data() + above;
@@ -433,7 +436,7 @@ void update_viscosity(const Grid& g, const Fields& s, const std::vector<double>&
   // (corners read Dxx, Dzz of both neighbouring rows: after the cell loop has finished)
   // In chunks as the cells: `corner`'s expressions vectorised (its first column wraps to column
   // nx - 1), the interface corners of the Extrapolated rule one by one.
-  parallel_for_interleaved(nz + 1, [&](int k) {
+  parallel_for(nz + 1, true, [&](int k) {
     const int kb = std::max(k - 1, 0), kt = std::min(k, nz - 1);
     const std::size_t row_b = std::size_t(kb) * nx, row_t = std::size_t(kt) * nx,
                       row = std::size_t(k) * nx, row_1 = std::size_t(1) * nx;

@@ -78,26 +78,12 @@ void ThreadTeam::run_share(int member) noexcept {
   int count = 0;
   try {
     const std::size_t m = std::size_t(member);
-    if (range_body_ != nullptr || schedule_ == Schedule::Contiguous) {
-      const int begin = bounds_[m], end = bounds_[m + 1];
-      count = end - begin;
-      if (range_body_ != nullptr) {
-        if (begin < end) (*range_body_)(begin, end);
-      } else {
-        for (int i = begin; i < end; ++i) (*body_)(i);
-      }
+    const int begin = bounds_[m], end = bounds_[m + 1];
+    count = end - begin;
+    if (range_body_ != nullptr) {
+      if (begin < end) (*range_body_)(begin, end);
     } else {
-      // interleaved: index i belongs to the member whose interval holds frac(i g), g the golden
-      // ratio's fractional part (a sequence that fills [0, 1) evenly)
-      constexpr double kGolden = 0.6180339887498949;
-      const double low = cumulative_[m], high = member + 1 == size_ ? 2.0 : cumulative_[m + 1];
-      for (int i = 0; i < n_; ++i) {
-        const double x = i * kGolden - std::floor(i * kGolden);
-        if (x >= low && x < high) {
-          (*body_)(i);
-          ++count;
-        }
-      }
+      for (int i = begin; i < end; ++i) (*body_)(i);
     }
   } catch (...) {
     if (!has_error_.exchange(true)) error_ = std::current_exception();
@@ -106,9 +92,8 @@ void ThreadTeam::run_share(int member) noexcept {
   records_[std::size_t(member)].ticks = ShareBalance::ticks_now() - start;
 }
 
-void ThreadTeam::run(int n, Schedule schedule, IndexBody body, std::uintptr_t site) {
+void ThreadTeam::run(int n, IndexBody body, std::uintptr_t site) {
   n_ = n;
-  schedule_ = schedule;
   body_ = &body;
   range_body_ = nullptr;
   run_loop(site);
@@ -116,7 +101,6 @@ void ThreadTeam::run(int n, Schedule schedule, IndexBody body, std::uintptr_t si
 
 void ThreadTeam::run_ranges(int n, RangeBody body, std::uintptr_t site) {
   n_ = n;
-  schedule_ = Schedule::Contiguous;
   body_ = nullptr;
   range_body_ = &body;
   run_loop(site);

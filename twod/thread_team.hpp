@@ -46,7 +46,7 @@ class ThreadTeam {
   // thread must be the one that made the team. An exception thrown by body is rethrown here
   // (the first one seen) after every member has finished its share. `site` names the loop for
   // the balance of its shares (the body's code: BodyRef::identity()).
-  void run(int n, Schedule schedule, IndexBody body, std::uintptr_t site);
+  void run(int n, IndexBody body, std::uintptr_t site);
   // body(begin, end) once per member with a non-empty contiguous share of [0, n).
   void run_ranges(int n, RangeBody body, std::uintptr_t site);
 
@@ -61,7 +61,7 @@ class ThreadTeam {
   // Hands the loop described by the members' fields below to the workers, runs member 0's share
   // and waits for the others.
   void run_loop(std::uintptr_t site);
-  // The shares' bounds (contiguous and ranges) from the balance's cumulative shares.
+  // The shares' bounds from the balance's cumulative shares.
   void set_bounds();
   void run_share(int member) noexcept;
   // Takes member's share of the loop of `generation` for the calling thread (the member itself,
@@ -73,11 +73,8 @@ class ThreadTeam {
   TakeOver take_over_;
   std::vector<std::thread> workers_;
   // The loop being handed out (written by the caller before it bumps generation_): n_ indices,
-  // either body_ (by schedule_) or range_body_ (contiguous ranges), member m's share
-  // [bounds_[m], bounds_[m + 1]) or, interleaved, the indices whose golden-ratio fraction lies
-  // in [cumulative_[m], cumulative_[m + 1]) (spread evenly over the range at any shares).
+  // either body_ or range_body_, member m's share [bounds_[m], bounds_[m + 1]).
   int n_ = 0;
-  Schedule schedule_ = Schedule::Contiguous;
   const IndexBody* body_ = nullptr;
   const RangeBody* range_body_ = nullptr;
   std::vector<int> bounds_;

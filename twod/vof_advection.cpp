@@ -57,9 +57,9 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
   if (dir == 0) {
     const double r = dt / g.dx;
     flux.resize(g.cells());  // flux through x-face (i, k); every face written below
-    // (rows spread over the threads: only the few rows at the surface need PLIC, and in
-    // contiguous blocks they all fell to one thread)
-    parallel_for_interleaved(nz, [&](int k) {
+    // (rows in contiguous blocks, sized by the team's balance: only the few rows at the surface
+    // need PLIC, and one block holds them all; see update_viscosity for why not interleaved)
+    parallel_for(nz, true, [&](int k) {
       for (int i = 0; i < nx; ++i) {
         const double s = u[g.at(i, k)] * r;
         if (s > 0.0)
@@ -80,7 +80,7 @@ void sweep(const Grid& g, const std::vector<double>& u, const std::vector<double
     const double r = dt / g.dz;
     flux.resize(g.w_faces());  // flux through z-face (i, k); every face written below
     for (int i = 0; i < nx; ++i) flux[g.at(i, 0)] = 0.0;  // the bed
-    parallel_for_interleaved(nz + 1 - 1, [&](int k_from_1) {
+    parallel_for(nz + 1 - 1, true, [&](int k_from_1) {
       const int k = k_from_1 + 1;
       for (int i = 0; i < nx; ++i) {
         const double s = w[g.at(i, k)] * r;

@@ -56,9 +56,6 @@ TEST(ThreadTeam, EveryLoopVisitsEveryIndexOnce) {
         EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "parallel " << parallel;
       }
       std::vector<int> visits(n, 0);
-      parallel_for_interleaved(n, [&](int i) { ++visits[i]; });
-      EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "interleaved";
-      std::fill(visits.begin(), visits.end(), 0);
       std::atomic<int> ranges{0};
       parallel_for_ranges(n, [&](int begin, int end) {
         ++ranges;
@@ -81,19 +78,11 @@ TEST(ThreadTeam, WorkIsSharedAmongTheThreads) {
   std::vector<std::thread::id> ran_on(64);
   auto record = [&](int i) { ran_on[i] = std::this_thread::get_id(); };
   const IndexBody body = record;
-  team.run(64, Schedule::Contiguous, body, body.identity());
+  team.run(64, body, body.identity());
   EXPECT_TRUE(
       std::all_of(ran_on.begin(), ran_on.begin() + 32, [&](auto id) { return id == caller; }));
   EXPECT_TRUE(
       std::none_of(ran_on.begin() + 32, ran_on.end(), [&](auto id) { return id == caller; }));
-  // interleaved, each thread about half of every stretch of the range (the indices whose
-  // golden-ratio fraction is below or above 1/2)
-  team.run(64, Schedule::Interleaved, body, body.identity());
-  for (int begin = 0; begin < 64; begin += 16) {
-    const auto on_caller = std::count(ran_on.begin() + begin, ran_on.begin() + begin + 16, caller);
-    EXPECT_GE(on_caller, 6) << "indices " << begin << "..";
-    EXPECT_LE(on_caller, 10) << "indices " << begin << "..";
-  }
 }
 
 TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
@@ -104,8 +93,8 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
   ThreadTeam team(2, ThreadTeam::TakeOver::Never);
   const std::thread::id caller = std::this_thread::get_id();
   // every index costs ~1 us on the caller and six times that on the worker: the worker's share
-  // settles near a seventh of the range, for either schedule. Judged by the median of the later
-  // calls, so that a call disturbed by another process (ctest runs two at once) does not decide.
+  // settles near a seventh of the range. Judged by the median of the later calls, so that a call
+  // disturbed by another process (ctest runs two at once) does not decide.
   auto spin = [](std::chrono::nanoseconds d) {
     const auto until = std::chrono::steady_clock::now() + d;
     while (std::chrono::steady_clock::now() < until) {
@@ -120,23 +109,19 @@ TEST(ThreadTeam, AMemberThatRunsSlowerGetsASmallerShare) {
     if (worker) ++on_worker;
     spin(std::chrono::microseconds(worker ? 6 : 1));
   };
-  for (bool interleaved : {false, true}) {
-    SCOPED_TRACE(interleaved ? "interleaved" : "contiguous");
-    std::vector<int> worker_share;
-    for (int call = 0; call < 30; ++call) {
-      std::fill(visits.begin(), visits.end(), 0);
-      on_worker = 0;
-      const IndexBody loop = body;
-      team.run(n, interleaved ? Schedule::Interleaved : Schedule::Contiguous, loop,
-               loop.identity());
-      ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
-      if (call >= 10) worker_share.push_back(on_worker.load());
-    }
-    std::nth_element(worker_share.begin(), worker_share.begin() + 10, worker_share.end());
-    const int median = worker_share[10];
-    EXPECT_LT(median, n * 4 / 10) << "equal shares would give " << n / 2;
-    EXPECT_GT(median, 0) << "every member keeps at least one index";
+  std::vector<int> worker_share;
+  for (int call = 0; call < 30; ++call) {
+    std::fill(visits.begin(), visits.end(), 0);
+    on_worker = 0;
+    const IndexBody loop = body;
+    team.run(n, loop, loop.identity());
+    ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
+    if (call >= 10) worker_share.push_back(on_worker.load());
   }
+  std::nth_element(worker_share.begin(), worker_share.begin() + 10, worker_share.end());
+  const int median = worker_share[10];
+  EXPECT_LT(median, n * 4 / 10) << "equal shares would give " << n / 2;
+  EXPECT_GT(median, 0) << "every member keeps at least one index";
 }
 
 TEST(ThreadTeam, ALoopInsideALoopRunsOnTheCallingThread) {
@@ -213,8 +198,7 @@ TEST(ThreadTeam, TheCallerRunsTheSharesOfAWorkerThatHasNoCore) {
     const IndexBody body = visit;  // (a reference to `visit`)
     for (int call = 0; call < 200; ++call) {
       std::fill(visits.begin(), visits.end(), 0);
-      team.run(n, call % 2 == 0 ? Schedule::Contiguous : Schedule::Interleaved, body,
-               body.identity());
+      team.run(n, body, body.identity());
       ASSERT_EQ(std::count(visits.begin(), visits.end(), 1), n) << "call " << call;
     }
     taken_over = team.shares_taken_over();

@@ -6,8 +6,9 @@
 // y = y + s x, loop after loop, on the solver's own team (twod/parallel.hpp), dealt in one of
 // four ways:
 //   rows         every loop split by rows (each thread its contiguous block of rows);
-//   every_other  each thread every other row, the same rows in every loop (the interleaved
-//                schedule the solver had for rows of uneven cost until the forty-sixth session);
+//   every_other  each thread every other row, the same rows in every loop (like the rows dealt
+//                out by the golden ratio that the solver had for rows of uneven cost until the
+//                forty-sixth session);
 //   columns      every loop split by columns (each thread its part of every row);
 //   alternate    rows, then columns, then rows...: half of each thread's data was last written by
 //                the other core, as when a row loop of the solver is followed by a column loop
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench/core_placement.hpp"

@@ -3,11 +3,13 @@
 // request, part of the heap is marked for them.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "analysis/cli/heap_pages.hpp"
 

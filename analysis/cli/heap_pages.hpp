@@ -13,7 +13,9 @@ namespace granbench::cli {
 //   - blocks up to 32 MiB come from the heap (not from mmap) and a freed block stays in the
 //     process for the next one (mallopt), so a block that is freed and made again each step is
 //     not faulted in again;
-//   - the heap grows by 32 MiB at a time, and that range is marked for huge pages (madvise).
+//   - the heap grows by 32 MiB at a time, and that range is marked for huge pages (madvise);
+//   - the blocks made after the call start in the marked range: the part of the heap below its
+//     first 2 MiB boundary is filled by one block that is never used.
 // Results do not change: only where the memory comes from.
 void use_huge_pages_for_the_heap();
 

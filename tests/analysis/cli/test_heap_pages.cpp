@@ -68,4 +68,23 @@ TEST(HeapPages, BlocksOfAFewMiBComeFromTheHeapMarkedForHugePages) {
   EXPECT_TRUE(eligible) << "no part of the heap is marked for huge pages";
 }
 
+// The blocks made after the call come from the marked part of the heap, not from the part
+// below its first 2 MiB boundary (which cannot be a huge page). A block of 1 MiB: larger than
+// any block the test program freed before, so it is cut from the heap's free top.
+TEST(HeapPages, LaterBlocksComeFromTheMarkedPartOfTheHeap) {
+  granbench::cli::use_huge_pages_for_the_heap();
+  std::ifstream policy("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string modes;
+  std::getline(policy, modes);
+  if (modes.find("[madvise]") == std::string::npos && modes.find("[always]") == std::string::npos)
+    GTEST_SKIP() << "this kernel gives no huge pages on request (" << modes << ")";
+  void* volatile block = std::malloc(std::size_t(1) << 20);
+  const auto at = reinterpret_cast<std::uintptr_t>(block);
+  bool marked = false;
+  for (const Mapping& m : mappings())
+    marked = marked || (m.name == "[heap]" && m.huge_page_eligible && at >= m.begin && at < m.end);
+  std::free(block);
+  EXPECT_TRUE(marked) << "a block made after the call lies in the heap's unmarked start";
+}
+
 }  // namespace

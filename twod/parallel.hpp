@@ -38,14 +38,17 @@ class BodyRef {
       BodyRef(F&& f)  // NOLINT(google-explicit-constructor): lambdas convert where passed
       : object_(const_cast<void*>(static_cast<const void*>(&f))),
         call_([](void* o, Args... a) { (*static_cast<std::remove_reference_t<F>*>(o))(a...); }) {}
+  // An empty reference (a thread team's slot for a loop not handed out); not callable.
+  BodyRef() = default;
   void operator()(Args... a) const { call_(object_, a...); }
+  explicit operator bool() const { return call_ != nullptr; }
   // The body's code, the same for every call of one loop (a thread team balances its shares
   // per loop with it).
   std::uintptr_t identity() const { return reinterpret_cast<std::uintptr_t>(call_); }
 
  private:
-  void* object_;
-  void (*call_)(void*, Args...);
+  void* object_ = nullptr;
+  void (*call_)(void*, Args...) = nullptr;
 };
 using IndexBody = BodyRef<int>;       // body(i)
 using RangeBody = BodyRef<int, int>;  // body(begin, end)

@@ -6,8 +6,8 @@
 // threads, against 0.9 us for a hand-off through one atomic counter to a spinning worker, and its
 // wake-ups made futex system calls inside the projection (docs/performance.md). The team keeps
 // its workers spinning between loops for a short while, then lets them sleep (so an idle solver
-// does not hold a core), and hands each loop out by bumping one counter. When the caller has
-// waited a while for a worker that has not begun its share (more threads than free cores), it
+// does not hold a core), and hands each loop out through one cache line per worker. When the caller
+// has waited a while for a worker that has not begun its share (more threads than free cores), it
 // runs that share itself.
 //
 // A loop's shares follow the members' measured speeds at that loop (share_balance.hpp): equal at
@@ -58,12 +58,37 @@ class ThreadTeam {
   static bool inside_a_loop();
 
  private:
-  // Hands the loop described by the members' fields below to the workers, runs member 0's share
-  // and waits for the others.
-  void run_loop(std::uintptr_t site);
+  // One member's share of a loop: body(i) for i in [begin, end), or range_body(begin, end).
+  struct Share {
+    int begin = 0, end = 0;
+    IndexBody body;
+    RangeBody range_body;
+  };
+  // What the caller hands one worker: the loop's generation and the worker's share, on one cache
+  // line that the worker polls. With the cores far apart every line a worker has to fetch from
+  // the caller's core costs a few hundred ns before it can start; with the loop's description
+  // spread over the team's fields, the shares' bounds and the body on the caller's stack, an
+  // empty loop took 1.2 us, and 0.6 us with the mailbox (docs/performance.md, forty-seventh
+  // session).
+  struct alignas(64) Mailbox {
+    std::atomic<unsigned> generation{0};
+    Share share;
+  };
+  // What a worker reports when its share is done, on one line that the caller polls: the
+  // generation of the loop, and how many indices it ran in how long (for the balance).
+  struct alignas(64) Report {
+    std::atomic<unsigned> generation{0};
+    int count = 0;
+    std::uint64_t ticks = 0;
+  };
+
+  // Hands the loop (n indices, one of the two bodies) to the workers, runs member 0's share and
+  // waits for the others.
+  void run_loop(int n, IndexBody body, RangeBody range_body, std::uintptr_t site);
   // The shares' bounds from the balance's cumulative shares.
-  void set_bounds();
-  void run_share(int member) noexcept;
+  void set_bounds(int n);
+  // Runs a share; returns its ticks (ShareBalance::ticks_now). An exception is kept in error_.
+  std::uint64_t run_share(const Share& share) noexcept;
   // Takes member's share of the loop of `generation` for the calling thread (the member itself,
   // or the caller for a worker that has not begun); false when someone has taken it already.
   bool claim(int member, unsigned generation);
@@ -72,22 +97,17 @@ class ThreadTeam {
   int size_;
   TakeOver take_over_;
   std::vector<std::thread> workers_;
-  // The loop being handed out (written by the caller before it bumps generation_): n_ indices,
-  // either body_ or range_body_, member m's share [bounds_[m], bounds_[m + 1]).
-  int n_ = 0;
-  const IndexBody* body_ = nullptr;
-  const RangeBody* range_body_ = nullptr;
+  // Written by the caller only: the loops handed out so far, member m's share
+  // [bounds_[m], bounds_[m + 1]), and which workers have finished the present loop.
+  unsigned generation_ = 0;
   std::vector<int> bounds_;
   std::vector<double> cumulative_;
+  std::vector<char> finished_;
   ShareBalance balance_;
-  // What each member did in the last loop, each on its own cache line.
-  struct alignas(64) MemberRecord {
-    int count = 0;
-    std::uint64_t ticks = 0;
-  };
-  std::vector<MemberRecord> records_;
-  std::vector<int> counts_;  // (the records gathered for the balance)
+  std::vector<int> counts_;  // (what each member did in the last loop, for the balance)
   std::vector<std::uint64_t> ticks_;
+  std::vector<Mailbox> mailboxes_;  // [m] for worker m (entry 0 unused)
+  std::vector<Report> reports_;     // [m] from worker m (entry 0 unused)
   // Per member, the generation of the last loop whose share someone took, each on its own cache
   // line.
   struct alignas(64) Claim {
@@ -99,10 +119,6 @@ class ThreadTeam {
   bool stopping_ = false;
   std::exception_ptr error_;
   std::atomic<bool> has_error_{false};
-  // Each counter on its own cache line: the workers poll generation_ while the caller polls
-  // pending_.
-  alignas(64) std::atomic<unsigned> generation_{0};
-  alignas(64) std::atomic<int> pending_{0};
   alignas(64) std::atomic<int> sleepers_{0};
   // Where workers that found no loop for a while sleep (sleepers_ counts them).
   std::mutex sleep_mutex_;

@@ -29,14 +29,6 @@ ThreadTeam& team_of_this_thread(int threads) {
   }
   return *team;
 }
-
-void run_loop(int n, IndexBody body) {
-  const int threads = thread_count();
-  if (n > 1 && threads > 1 && !ThreadTeam::inside_a_loop())
-    team_of_this_thread(threads).run(n, body, body.identity());
-  else
-    for (int i = 0; i < n; ++i) body(i);
-}
 }  // namespace
 
 int thread_count() {
@@ -57,8 +49,9 @@ void set_thread_count(int n) {
 }
 
 void parallel_for(int n, bool parallel, IndexBody body) {
-  if (parallel)
-    run_loop(n, body);
+  const int threads = parallel ? thread_count() : 1;
+  if (threads > 1 && n > 1 && !ThreadTeam::inside_a_loop())
+    team_of_this_thread(threads).run(n, body, body.identity());
   else
     for (int i = 0; i < n; ++i) body(i);
 }

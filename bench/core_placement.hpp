@@ -56,4 +56,30 @@ inline double core_round_trip_ns() {
   return times[4];
 }
 
+// The CPUs of this process's affinity mask, in order.
+inline std::vector<int> allowed_cpus() {
+  std::vector<int> cpus;
+#ifdef __linux__
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof(set), &set) == 0)
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &set)) cpus.push_back(c);
+#endif
+  return cpus;
+}
+
+// Let the calling thread run only on `cpus` (one CPU to pin it; allowed_cpus() as it was to undo
+// that); false where that is not possible (not Linux, or the kernel refused).
+inline bool pin_calling_thread(const std::vector<int>& cpus) {
+#ifdef __linux__
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  for (int c : cpus) CPU_SET(c, &set);
+  return sched_setaffinity(0, sizeof(set), &set) == 0;
+#else
+  (void)cpus;
+  return false;
+#endif
+}
+
 }  // namespace granbench::bench

@@ -8,8 +8,9 @@
 #   bench/gerris_side_by_side.sh [build-dir] [t_end seconds] [LEVEL]
 # Installs gerris2D (Debian package gerris) when missing; reads the case from shared/ beside the
 # repository (or GERRIS_CASE). Each pair runs pinned to one CPU, once per CPU (below); the
-# headline figures are the pair with the smaller speed-up, and `per_cpu` lists every pair. GRANBENCH_OPTIONS adds options to granbench's run (e.g.
-# "--cfl 0.8"; default none: granbench's defaults).
+# headline figures are the pair with the smaller speed-up, and `per_cpu` lists every pair.
+# GRANBENCH_OPTIONS adds options to granbench's run (e.g. "--cfl 0.8"; default none: granbench's
+# defaults).
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-build}
@@ -30,7 +31,8 @@ tend=$(python3 -c "print($t_end/$T0)")
 # Both codes run on the same CPU, pinned (taskset), once on each CPU this script may use (or
 # on those of GERRIS_BENCH_CPUS, e.g. "1"): the host at times runs one of this machine's two
 # virtual CPUs 1.3-1.7 times slower than the other, and slows Gerris more than granbench there
-# (docs/performance.md), so a pair split across the two CPUs would compare the CPUs, not the codes.
+# (docs/performance.md), so a pair split across the two CPUs would compare the CPUs, not the
+# codes.
 cpus=${GERRIS_BENCH_CPUS:-$(python3 -c "import os; print(' '.join(map(str, sorted(os.sched_getaffinity(0)))))")}
 for cpu in $cpus; do
   rm -rf "$here/out" && mkdir -p "$here/out/h" "$here/out/full"

@@ -33,7 +33,8 @@ tend=$(python3 -c "print($t_end/$T0)")
 # virtual CPUs 1.3-1.7 times slower than the other, and slows Gerris more than granbench there
 # (docs/performance.md), so a pair split across the two CPUs would compare the CPUs, not the
 # codes.
-cpus=${GERRIS_BENCH_CPUS:-$(python3 -c "import os; print(' '.join(map(str, sorted(os.sched_getaffinity(0)))))")}
+allowed=$(python3 -c "import os; print(' '.join(map(str, sorted(os.sched_getaffinity(0)))))")
+cpus=${GERRIS_BENCH_CPUS:-$allowed}
 for cpu in $cpus; do
   rm -rf "$here/out" && mkdir -p "$here/out/h" "$here/out/full"
   g_start=$(date +%s.%N)

@@ -102,6 +102,7 @@ void run_depthavg(const RunOptions& o, const DepthAvgOptions& mo) {
                       {"status", status},
                       {"message", r.message},
                       {"t_reached", r.t_reached},
+                      {"cells", nlohmann::json::array({o.nx})},  // as in compare and sweep
                       {"steps", r.stats.steps},
                       {"rhs_evals", r.stats.total_rhs_evals()},
                       {"jacobian_evals", r.stats.jacobian_evals},

@@ -57,6 +57,9 @@ nlohmann::json twod_result_json(const twod::RunResult& res, const twod::Solver& 
       {"max_divergence", st.max_divergence},
       {"dt_min", st.dt_min},
       {"dt_max", st.dt_max},
+      // the grid the run took (the default rule's or the options'), spelled as in compare and sweep
+      {"cells", {solver.grid().nx, solver.grid().nz}},
+      {"Lz", solver.grid().Lz},
       {"frame_speed", solver.grid().frame_speed},  // the grid's; the outputs are in the lab frame
       {"h_mean", h_mean},
       {"flux", twod::mean_flux(solver.grid(), solver.state())},

@@ -39,7 +39,8 @@ nlohmann::json compare_json(const std::string& args, const std::string& tag) {
   return c.code == 0 ? nlohmann::json::parse(c.out) : nlohmann::json::object();
 }
 
-// A model's recorded run command, run alone, gives its growth rate and phase speed to 1e-9.
+// A model's recorded run command, run alone, gives its growth rate and phase speed to 1e-9, on
+// the same cells.
 void expect_run_command_reproduces(const nlohmann::json& m, const std::string& model,
                                    const std::string& tag) {
   ASSERT_TRUE(m["run_command"].is_string()) << model;
@@ -51,6 +52,8 @@ void expect_run_command_reproduces(const nlohmann::json& m, const std::string& m
   const auto jr = nlohmann::json::parse(r.out);
   expect_same_to_1e9(m, jr, "growth_rate", model);
   expect_same_to_1e9(m, jr, "phase_speed", model);
+  // and says which grid it took: compare's
+  EXPECT_EQ(jr["cells"], m["cells"]) << model;
 }
 
 // compare's warning that the depth-averaged model limits its slopes; empty if there is none.

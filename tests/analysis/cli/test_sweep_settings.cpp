@@ -189,7 +189,7 @@ TEST(SweepSettings, AShortTwodWaveIsWarnedOfOnlyBelowItsRefinedGrid) {
   EXPECT_NE(coarse[1].find("short wave (5 h0)"), std::string::npos) << coarse[1];
   // and on its 23.5 cells per h0 the 2 cm wave's growth is expected 17 % under the theory
   EXPECT_EQ(coarse[2].find("Lx = 0.02 m: a small growth rate"), 0u) << coarse[2];
-  // Near the cutoff (1.38 cm) the default preset's grid follows the deficit law up to six times
+  // Near the cutoff (1.370 cm) the default preset's grid follows the deficit law up to six times
   // its rows, under a light layer of h0/4: 1.4 cm (384 rows, 306.5 cells per h0) is not named,
   // 1.39 cm is, at that cap.
   EXPECT_TRUE(warnings("twod", "0.014:0.02:2", "").empty());

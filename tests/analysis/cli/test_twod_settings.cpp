@@ -122,7 +122,7 @@ TEST(TwodSettings, NearTheCutoffTheDeficitLawAddsCellsAcrossTheLayer) {
   auto nz = [](double angle, double h0, double Lx, int preset_nz, double aim, SeedAndRun seed) {
     return law_grid(angle, h0, Lx, preset_nz, aim, seed).nz;
   };
-  // section 7 (28.5 degrees, 4 mm; cutoff near 1.38 cm), the default preset, under h0 of light
+  // section 7 (28.5 degrees, 4 mm; cutoff near 1.370 cm), the default preset, under h0 of light
   // fluid (the paper's sine start grows beyond h0/20)
   EXPECT_EQ(nz(28.5, 4e-3, 0.08, 64, 0.075, kPaperRun), 64);
   EXPECT_EQ(nz(28.5, 4e-3, 0.03, 64, 0.075, kPaperRun), 64);

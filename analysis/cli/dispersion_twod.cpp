@@ -1,13 +1,15 @@
 // `granbench dispersion --theory twod` (dispersion_twod.hpp). Steps: (1) the 2D linear stability
 // at each Lx, at N and at 3N/2 for the convergence check; (2) the short-wave ill-posedness probe;
-// (3) output: JSON, table, and with --out/--plot the three theories over k_hat (the 2D surface
-// branch, (7.11) with chi = 1 and with chi = 5/4) plus each surface eigenmode's profiles.
+// (3) the surface mode's cutoff, at both resolutions; (4) output: JSON, table, and with
+// --out/--plot the three theories over k_hat (the 2D surface branch, (7.11) with chi = 1 and with
+// chi = 5/4) plus each surface eigenmode's profiles.
 #include "analysis/cli/dispersion_twod.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <numbers>
 
 #include "analysis/cli/dispersion_output.hpp"
 #include "analysis/linear2d/eigenmode.hpp"
@@ -31,8 +33,15 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
   const auto probe = linear2d::probe_ill_posedness(s, curve);                    // (2)
   const auto& base = results.front().base;
   const double F_c = linear2d::critical_froude_2d(base.mu, base.Gamma);
+  // (3) the surface mode's cutoff, at N and at N_check for its convergence
+  const auto cutoff = linear2d::surface_mode_cutoff_k_hat(base, opt.N, opt.map, opt.path);
+  const auto cutoff_check =
+      linear2d::surface_mode_cutoff_k_hat(base, opt.N_check, opt.map, opt.path);
+  const double cutoff_Lx = cutoff ? 2.0 * std::numbers::pi * s.h0 / *cutoff : NAN;  // (7.13b)
+  const double cutoff_difference =
+      cutoff && cutoff_check ? std::abs(*cutoff - *cutoff_check) / *cutoff_check : NAN;
 
-  if (!output.out.empty() || !output.plot.empty()) {  // (3)
+  if (!output.out.empty() || !output.plot.empty()) {  // (4)
     const std::string h5 = !output.out.empty() ? output.out : output.plot + ".data.h5";
     write_theories(h5, s, results, opt, t.curve_name);
     if (!output.plot.empty()) {
@@ -77,6 +86,9 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
                 {"Gamma", base.Gamma},
                 {"u_mean", s.u_mean},
                 {"modes", list},
+                {"cutoff_k_hat", cutoff ? nlohmann::json(*cutoff) : nlohmann::json(nullptr)},
+                {"cutoff_Lx", number_or_null(cutoff_Lx)},
+                {"cutoff_relative_difference", number_or_null(cutoff_difference)},
                 {"ill_posedness",
                  {{"C", probe.C},
                   {"k_hat_probe", probe.k_hat},
@@ -122,6 +134,15 @@ void run_twod_dispersion(const SteadyState& s, const MuCurve& curve, const std::
               << "rho_l/rho_g = " << l.r << ", overburden " << l.overburden()
               << " h0; other branches continued from the stress-free ones\n";
   }
+  if (cutoff)
+    std::cout << std::setprecision(6) << "\n  2D cutoff: k_hat = " << *cutoff
+              << ", Lx = " << cutoff_Lx << " m (the surface mode decays on shorter waves; "
+              << std::setprecision(2) << cutoff_difference << " relative to N = " << opt.N_check
+              << ")\n"
+              << std::setprecision(5);
+  else
+    std::cout << "\n  no 2D cutoff: the surface mode decays at every wavelength (F below "
+                 "critical) or grows up to k_hat = 30\n";
   std::cout << "\n  " << probe.message << "\n";
 }
 

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "common/root_finding.hpp"
+
 namespace granbench {
 namespace linear2d {
 
@@ -101,6 +103,28 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
                                              VerticalMap map, const ContinuationOptions& path) {
   // The path only steers: the eigenvalue returned is always the spectrum's at (N, map).
   return nearest_mode(b, k_hat, N, map, traced_surface_mode(b, k_hat, path));
+}
+
+std::optional<double> surface_mode_cutoff_k_hat(const LinearBaseState& b, int N, VerticalMap map,
+                                                const ContinuationOptions& path, double k_max) {
+  double k = path.k_start;
+  std::complex<double> lambda = followed_mode(b, k, N, map, traced_surface_mode(b, k, path));
+  if (!(lambda.real() > 0.0)) return std::nullopt;
+  // Steps of 20 %, finer than the path's: near the cutoff the surface mode's neighbours in the
+  // spectrum are critical-layer modes of nearly its speed, and the guess must stay closest to it.
+  for (;;) {
+    const double k_next = k * 1.2;
+    if (k_next > k_max) return std::nullopt;
+    const auto next = followed_mode(b, k_next, N, map, lambda * (k_next / k));
+    if (!(next.real() > 0.0)) break;
+    k = k_next;
+    lambda = next;
+  }
+  // Every evaluation inside the bracket [k, 1.2 k] starts from its lower end's eigenvalue.
+  const auto growth = [&, k_low = k, lambda_low = lambda](double kk) {
+    return followed_mode(b, kk, N, map, lambda_low * (kk / k_low)).real();
+  };
+  return brent_root(growth, k, 1.2 * k, 1e-10);
 }
 
 double scaled_wavenumber(const SteadyState& s, double Lx) {

@@ -54,6 +54,16 @@ std::complex<double> surface_mode_eigenvalue(const LinearBaseState& b, double k_
                                              VerticalMap map = VerticalMap::SquareRoot,
                                              const ContinuationOptions& path = {});
 
+// The 2D cutoff: the k_hat where the surface mode's growth rate, positive for long waves,
+// crosses zero (shorter waves decay), at resolution N in `map`, to 1e-10 in k_hat. The branch is
+// followed from path.k_start in steps of 20 %, then the crossing is bracketed by Brent's method.
+// Empty when the surface mode decays at path.k_start already (F below F_c) or still grows at
+// k_max.
+std::optional<double> surface_mode_cutoff_k_hat(const LinearBaseState& b, int N,
+                                                VerticalMap map = VerticalMap::SquareRoot,
+                                                const ContinuationOptions& path = {},
+                                                double k_max = 30.0);
+
 // The scaled wavenumber k_hat = 2 pi h0 / Lx of (7.13b); Lx > 0 [m].
 double scaled_wavenumber(const SteadyState& s, double Lx);
 

@@ -1,7 +1,7 @@
 // `granbench dispersion --theory twod` end to end: the documented JSON (growth rate and phase
-// speed of the surface mode, convergence check, unstable branches, ill-posedness probe), agreement
-// with the library, the warning for an ill-posed base state, and bad input (exit 2, one line
-// naming the option, no output file); the --light-layer options and output.
+// speed of the surface mode, convergence check, unstable branches, the cutoff, ill-posedness
+// probe), agreement with the library, the warning for an ill-posed base state, and bad input (exit
+// 2, one line naming the option, no output file); the --light-layer options and output.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,6 +44,12 @@ TEST(Linear2DCli, TwoDTheoryJsonCarriesTheConvergenceCheck) {
   EXPECT_NEAR(b[0]["phase_speed"].get<double>(), 0.3195, 1e-3);
   EXPECT_NEAR(j["F_critical"].get<double>(), 0.6076, 5e-4);
   EXPECT_FALSE(j["ill_posedness"]["ill_posed_base_state"].get<bool>());
+  // The cutoff: the library's, as a length by (7.13b), converged between N = 32 and 48.
+  const auto kc = linear2d::surface_mode_cutoff_k_hat(lib.base, 32);
+  ASSERT_TRUE(kc.has_value());
+  EXPECT_NEAR(j["cutoff_k_hat"].get<double>(), *kc, 1e-12);
+  EXPECT_NEAR(j["cutoff_Lx"].get<double>(), 2.0 * 3.141592653589793 * 4e-3 / *kc, 1e-15);
+  EXPECT_LT(j["cutoff_relative_difference"].get<double>(), 1e-4);
 }
 
 TEST(Linear2DCli, IllPosedBaseStateIsReported) {

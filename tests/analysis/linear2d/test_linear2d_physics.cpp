@@ -1,7 +1,7 @@
 // Physics limits of the 2D linear stability of steady uniform flow (docs/linear-theory.md):
 // the kinematic wave speed as k -> 0, the derived long-wave growth coefficient and threshold, the
-// classical falling-film threshold for a Newtonian layer, the §7 values, the slow second branch,
-// and the ill-posedness signature of the Jop curve at 28.5 deg.
+// classical falling-film threshold for a Newtonian layer, the cutoff, the §7 values, the slow
+// second branch, and the ill-posedness signature of the Jop curve at 28.5 deg.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -85,6 +85,22 @@ TEST(Linear2DPhysics, LongWaveThresholdFromDepthScan) {
   // The §7 case: neither 2/3 (depth-averaged, chi = 1) nor 2/sqrt(5) (chi = 5/4).
   const LinearBaseState b = bagnold(28.5, 4e-3);
   EXPECT_NEAR(critical_froude_2d(b.mu, b.Gamma), 0.6076, 5e-4);
+}
+
+TEST(Linear2DPhysics, CutoffIsWhereTheSurfaceModeStopsGrowing) {
+  // The section 7 case: traced to it afresh from the long-wave limit (surface_mode_eigenvalue's
+  // own path, its eigenvalue from the spectrum), the surface mode grows just below the cutoff
+  // and decays just above it; the growth changes by ~2e-8 (scaled) over these 1e-6 in k_hat,
+  // where the root is found to 1e-10.
+  const LinearBaseState b = bagnold(28.5, 4e-3);
+  const auto kc = surface_mode_cutoff_k_hat(b, 32);
+  ASSERT_TRUE(kc.has_value());
+  EXPECT_GT(surface_mode_eigenvalue(b, *kc * (1.0 - 1e-6), 32).real(), 0.0);
+  EXPECT_LT(surface_mode_eigenvalue(b, *kc * (1.0 + 1e-6), 32).real(), 0.0);
+  // Below the long-wave threshold (a thin layer at 24 degrees) nothing grows, so no cutoff.
+  const LinearBaseState thin = bagnold(24.0, 1e-4);
+  ASSERT_LT(thin.F, critical_froude_2d(thin.mu, thin.Gamma));
+  EXPECT_FALSE(surface_mode_cutoff_k_hat(thin, 32).has_value());
 }
 
 TEST(Linear2DPhysics, NewtonianFilmReproducesBenjaminYihThreshold) {

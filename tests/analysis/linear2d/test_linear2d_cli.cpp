@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 
 #include "analysis/linear2d/linear_stability_2d.hpp"
@@ -48,7 +49,7 @@ TEST(Linear2DCli, TwoDTheoryJsonCarriesTheConvergenceCheck) {
   const auto kc = linear2d::surface_mode_cutoff_k_hat(lib.base, 32);
   ASSERT_TRUE(kc.has_value());
   EXPECT_NEAR(j["cutoff_k_hat"].get<double>(), *kc, 1e-12);
-  EXPECT_NEAR(j["cutoff_Lx"].get<double>(), 2.0 * 3.141592653589793 * 4e-3 / *kc, 1e-15);
+  EXPECT_NEAR(j["cutoff_Lx"].get<double>(), 2.0 * std::numbers::pi * 4e-3 / *kc, 1e-15);
   EXPECT_LT(j["cutoff_relative_difference"].get<double>(), 1e-4);
 }
 

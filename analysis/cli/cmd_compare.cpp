@@ -159,8 +159,10 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   }
   if (auto w = twod_growth_accuracy_warning(c.base, dz, chute.Lx, c.theory.exact_2d.growth_rate,
                                             twod.domain_height(chute.h0))) {
+    // (not under the thin light layer, where the law's order did not hold)
     const bool can_extrapolate =
-        half_grid_cells_per_depth(twod, chute.h0) >= kGrowthDeficitFewestCellsPerDepth;
+        half_grid_cells_per_depth(twod, chute.h0) >= kGrowthDeficitFewestCellsPerDepth &&
+        !under_thin_light_layer(twod.domain_height(chute.h0), chute.h0);
     if (!o.extrapolate && can_extrapolate) *w += extrapolate_suggestion("the 2D model");
     warnings.push_back(*w);
   }

@@ -33,10 +33,20 @@ std::vector<std::string> twod_warnings(const SteadyState& base, double dz, doubl
 // The deficit law (kGrowthDeficitCoefficient, kGrowthDeficitOrder, expected_twod_growth_deficit)
 // is in analysis/comparison/growth_deficit_law.hpp.
 
+// Whether a domain of this height [m] holds less than h0/2 of light fluid above the grains: the
+// thin layer (h0/4) of the grids near the 2D cutoff (TwodSettings::refined_across), or a --Lz as
+// low. The deficit law was measured under h0 of light fluid; under the thin layer the measured
+// deficits were 1.4 times smaller than it says at 127.5 cells per h0 (1.5 cm) and 15 to 90 times
+// at 306.5 (1.372 to 1.4 cm), and its order did not hold (docs/twod-validation.md §3, "Down to the
+// cutoff").
+bool under_thin_light_layer(double domain_height, double h0);
+
 // When the law's deficit is more than 10 % of a positive exact 2D growth rate (a wave near the 2D
 // cutoff, or a coarse grid), a warning with the growth, the expected deficit and the cells per h0
 // that would bring it to 5 %, as the --nz that gives them on a domain of this height (a multiple
-// of 16, as the default grids); nothing otherwise.
+// of 16, as the default grids); nothing otherwise. Under a thin light layer
+// (under_thin_light_layer) the warning gives the deficits measured there instead of the law's
+// cells, which would be far more than needed.
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
                                                         double wavelength, double exact_growth,
                                                         double domain_height);

@@ -166,7 +166,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   if (eigenmode)
     if (auto w = twod_growth_accuracy_warning(base, grid.dz, wavelength, eigenmode->growth_rate(),
                                               grid.Lz)) {
-      if (!mo.extrapolate && o.mode == 1 &&
+      if (!mo.extrapolate && o.mode == 1 && !under_thin_light_layer(grid.Lz, o.flow.h0) &&
           half_grid_cells_per_depth(twod_run_settings(o, mo), o.flow.h0) >=
               kGrowthDeficitFewestCellsPerDepth)
         *w += extrapolate_suggestion("the wave");

@@ -227,6 +227,7 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
       std::ostringstream named;
       named << "Lx = " << Lx << " m: " << *w;
       if (!spec.twod_extrapolate &&
+          !under_thin_light_layer(point.domain_height(o.flow.h0), o.flow.h0) &&
           half_grid_cells_per_depth(point, o.flow.h0) >= kGrowthDeficitFewestCellsPerDepth)
         named << extrapolate_suggestion("the point");
       plan.warnings.push_back(named.str());

@@ -63,8 +63,11 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
   if (!(exact_growth > 0.0)) return std::nullopt;  // no growth to measure
   const double deficit = expected_twod_growth_deficit(base, dz, wavelength);
   if (deficit <= kTolerated * exact_growth) return std::nullopt;
-  if (under_thin_light_layer(domain_height, base.h0)) {
-    // The law's cells would be several times those needed here: give what was measured instead.
+  // Under the thin layer, on grids as fine as those it was measured on (127.5 to 306.5 cells per
+  // h0), the law's cells would be several times those needed: give what was measured instead.
+  constexpr double kThinLayerMeasuredCellsPerDepth = 127.0;
+  if (under_thin_light_layer(domain_height, base.h0) &&
+      base.h0 / dz >= kThinLayerMeasuredCellsPerDepth) {
     char thin[900];
     std::snprintf(
         thin, sizeof thin,

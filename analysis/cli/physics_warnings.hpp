@@ -45,8 +45,9 @@ bool under_thin_light_layer(double domain_height, double h0);
 // cutoff, or a coarse grid), a warning with the growth, the expected deficit and the cells per h0
 // that would bring it to 5 %, as the --nz that gives them on a domain of this height (a multiple
 // of 16, as the default grids); nothing otherwise. Under a thin light layer
-// (under_thin_light_layer) the warning gives the deficits measured there instead of the law's
-// cells, which would be far more than needed.
+// (under_thin_light_layer), on a grid as fine as those measured there (127.5 cells per h0 or
+// more), the warning gives the deficits measured there instead of the law's cells, which would be
+// far more than needed.
 std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base, double dz,
                                                         double wavelength, double exact_growth,
                                                         double domain_height);

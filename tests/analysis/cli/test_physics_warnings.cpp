@@ -100,7 +100,8 @@ TEST(PhysicsWarnings, AGrowthSmallAgainstTheGridsExpectedDeficitIsNamed) {
 // Under the thin light layer of the near-cutoff grids (h0/4 of fluid) the law overestimates the
 // deficit 15 to 90 times at 306.5 cells per h0: the 1.38 cm wave, which the law puts 27 % under
 // on that grid, measured 1.18 % under. The warning gives those measurements instead of the law's
-// --nz (about 1 000 cells per h0); under h0 of fluid it still names the law's cells.
+// --nz (about 1 000 cells per h0); under h0 of fluid, or on a grid coarser than any measured under
+// the thin layer, it still names the law's cells.
 TEST(PhysicsWarnings, UnderTheThinLightLayerTheMeasuredDeficitsAreNamedNotTheLawsCells) {
   const SteadyState good = section7(CurveKind::Regularised, 28.5);
   const double h0 = 4e-3, dz = h0 / 306.5;
@@ -116,6 +117,11 @@ TEST(PhysicsWarnings, UnderTheThinLightLayerTheMeasuredDeficitsAreNamedNotTheLaw
   ASSERT_TRUE(deep.has_value());
   EXPECT_NE(deep->find("in run or compare"), std::string::npos) << *deep;
   EXPECT_EQ(deep->find("thin light layer"), std::string::npos) << *deep;
+  // A thin layer over a grid coarser than any measured under it keeps the law's advice.
+  const auto coarse = cli::twod_growth_accuracy_warning(good, h0 / 31.5, 0.02, 0.82001, 1.25 * h0);
+  ASSERT_TRUE(coarse.has_value());
+  EXPECT_NE(coarse->find("in run or compare"), std::string::npos) << *coarse;
+  EXPECT_EQ(coarse->find("thin light layer"), std::string::npos) << *coarse;
 }
 
 // A grid the pressure multigrid cannot coarsen to a directly solved one is named with the counts

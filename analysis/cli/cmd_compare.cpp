@@ -97,7 +97,7 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   if (auto w = twod_grid_cost_warning(twod.nx, twod.nz, chute.Lx / twod.nx / dz))
     warnings.push_back(*w);
   if (o.extrapolate)
-    if (auto w = thin_layer_extrapolation_warning(twod)) warnings.push_back(*w);
+    if (auto w = thin_layer_extrapolation_warning(twod, chute.h0)) warnings.push_back(*w);
   if (!saturated.enabled)  // (the saturated wave does not rest on the early growth)
     if (auto w = large_step_sine_start_warning(twod.cfl, chute.seed == Seed::Sine))
       warnings.push_back(*w);

@@ -97,8 +97,8 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
   return std::string(buf);
 }
 
-std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& grid) {
-  if (grid.Lz_over_h0 != 0.0 || !(grid.light_layer_over_h0 < 1.0)) return std::nullopt;
+std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& grid, double h0) {
+  if (!under_thin_light_layer(grid.domain_height(h0), h0)) return std::nullopt;
   return std::string(
       "--extrapolate on the thin light layer of a grid near the 2D cutoff: the deficit law's "
       "order, on which the extrapolation rests, was measured under h0 of light fluid and did not "

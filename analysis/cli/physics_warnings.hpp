@@ -52,12 +52,12 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
                                                         double wavelength, double exact_growth,
                                                         double domain_height);
 
-// When --extrapolate is asked of a grid under the thin light layer of the near-cutoff rule
-// (TwodSettings::refined_across), a warning that the deficit law's order, on which the
-// extrapolation rests, was measured under h0 of light fluid and failed under the thin layer at
-// 1.4 cm (the pair converged at order 5.3 and the extrapolation overshot to +10.95 % from +0.14 %
-// measured; docs/twod-validation.md §3); nothing otherwise.
-std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& grid);
+// When --extrapolate is asked of a grid under a thin light layer (under_thin_light_layer: the
+// near-cutoff rule's, TwodSettings::refined_across, or a --Lz as low), a warning that the deficit
+// law's order, on which the extrapolation rests, was measured under h0 of light fluid and failed
+// under the thin layer at 1.4 cm (the pair converged at order 5.3 and the extrapolation overshot to
+// +10.95 % from +0.14 % measured; docs/twod-validation.md §3); nothing otherwise.
+std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& grid, double h0);
 
 // A 2D step above the VOF's 1/2 (--cfl, allowed up to 1) on a sine start: the decay of the short
 // waves the sine seeds moves with the step far more than the fundamental's growth does, and it

@@ -173,7 +173,8 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
       warnings.push_back(*w);
     }
   if (mo.extrapolate)
-    if (auto w = thin_layer_extrapolation_warning(twod_run_settings(o, mo))) warnings.push_back(*w);
+    if (auto w = thin_layer_extrapolation_warning(twod_run_settings(o, mo), o.flow.h0))
+      warnings.push_back(*w);
   if (auto w = large_step_sine_start_warning(params.cfl, o.init == "sine")) warnings.push_back(*w);
   Solver solver(grid, params,
                 restart ? restart->state

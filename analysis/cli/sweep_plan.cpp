@@ -216,7 +216,7 @@ void add_growth_accuracy_warnings(const SweepOptions& o, SweepPlan& plan) {
     }
     const TwodSettings point = point_twod_settings(spec, Lx, growth);
     if (spec.twod_extrapolate)
-      if (auto w = thin_layer_extrapolation_warning(point)) {
+      if (auto w = thin_layer_extrapolation_warning(point, o.flow.h0)) {
         std::ostringstream named;
         named << "Lx = " << Lx << " m: " << *w;
         plan.warnings.push_back(named.str());

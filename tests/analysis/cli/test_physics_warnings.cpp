@@ -11,6 +11,7 @@
 #include <string>
 
 #include "analysis/cli/physics_warnings.hpp"
+#include "analysis/comparison/twod_settings.hpp"
 #include "common/mu_curves.hpp"
 #include "tests/support/run_granbench.hpp"
 #include "tests/support/scratch_dir.hpp"
@@ -122,6 +123,20 @@ TEST(PhysicsWarnings, UnderTheThinLightLayerTheMeasuredDeficitsAreNamedNotTheLaw
   ASSERT_TRUE(coarse.has_value());
   EXPECT_NE(coarse->find("in run or compare"), std::string::npos) << *coarse;
   EXPECT_EQ(coarse->find("thin light layer"), std::string::npos) << *coarse;
+}
+
+// --extrapolate under a thin light layer is warned of whether the near-cutoff rule chose the layer
+// or a --Lz gave it; under h0 of fluid it is not.
+TEST(PhysicsWarnings, AnExtrapolationUnderAThinLightLayerIsWarnedOfHoweverTheLayerCame) {
+  const double h0 = 4e-3;
+  TwodSettings rule;  // the near-cutoff rule's h0/4 above the grains
+  rule.light_layer_over_h0 = 0.25;
+  TwodSettings given;  // the same height given as --Lz
+  given.Lz_over_h0 = 1.25;
+  TwodSettings deep;  // the default h0 of light fluid
+  EXPECT_TRUE(cli::thin_layer_extrapolation_warning(rule, h0).has_value());
+  EXPECT_TRUE(cli::thin_layer_extrapolation_warning(given, h0).has_value());
+  EXPECT_FALSE(cli::thin_layer_extrapolation_warning(deep, h0).has_value());
 }
 
 // A grid the pressure multigrid cannot coarsen to a directly solved one is named with the counts

@@ -2,7 +2,7 @@
 // conjugate gradients of twod/projection.cpp on the pressure operator of a real state of the §7
 // rollwave case (Lx = 0.08 m, zeta = 28.5 deg, h0 = 4 mm, a0 = 0.2 mm, Lz = 2 h0), after the
 // solver has run to t_state, so that the operator holds the wavy surface's density jump as the
-// VOF left it (the faces' densities from the fill fractions, 1500 against 0.015 kg/m^3).
+// VOF left it (the faces' densities from the fill fractions, 1500 against the default light fluid).
 //
 // Per grid it solves A x = b from x = 0 to the projection's tolerance, for b a fixed
 // pseudo-random field (white: every scale of the error is excited, the smooth ones that the

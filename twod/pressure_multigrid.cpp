@@ -7,7 +7,7 @@
 //                symmetric (valid for CG).
 //                Whole columns are solved at once because the grid is finer in z than in x
 //                (coefficient ratio (dx/dz)^2) and the density jump of the free surface
-//                (beta jumps by rho_g/rho_l = 1500/0.015 = 1e5 with the default light fluid)
+//                (beta jumps by rho_g/rho_l = 1500/0.0015 = 1e6 with the default light fluid)
 //                runs across the columns.
 //                The columns of one colour are solved eight side by side, one per vector lane
 //                (kLineLanes; solve_column_group), the rest four at a time: the recurrences in

@@ -36,9 +36,10 @@ std::vector<std::string> twod_warnings(const SteadyState& base, double dz, doubl
 // Whether a domain of this height [m] holds less than h0/2 of light fluid above the grains: the
 // thin layer (h0/4) of the grids near the 2D cutoff (TwodSettings::refined_across), or a --Lz as
 // low. The deficit law was measured under h0 of light fluid; under the thin layer the measured
-// deficits were 1.4 times smaller than it says at 127.5 cells per h0 (1.5 cm) and 15 to 90 times
-// at 306.5 (1.372 to 1.4 cm), and its order did not hold (docs/twod-validation.md §3, "Down to the
-// cutoff").
+// deficits were 1.3 times smaller than it says at 127.5 cells per h0 (1.5 cm) and 8 to 14 times
+// at 306.5 (1.372 to 1.4 cm; 15 to 90 times with the former, heavier light fluid), and its order
+// did not hold (docs/twod-validation.md §3, "Down to the cutoff" and "The lighter light fluid as
+// the default").
 bool under_thin_light_layer(double domain_height, double h0);
 
 // When the law's deficit is more than 10 % of a positive exact 2D growth rate (a wave near the 2D

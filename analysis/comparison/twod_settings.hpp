@@ -88,8 +88,9 @@ struct TwodSettings {
   double aimed_growth_deficit = 0.075;
   // The cap bounds a point's cost: six times the preset's rows, 384 at the default preset. Under
   // the thin light layer below that is 306.5 cells per h0, on which the 1.4 cm wave (1.5 % above
-  // the cutoff) grew 0.14 % above the 2D theory; on four times (204.5 per h0) it was 12 % under
-  // (docs/twod-validation.md §3, "A thin light layer near the cutoff").
+  // the cutoff) grew 0.14 % above the 2D theory (0.66 % under with the default light fluid since
+  // the fiftieth session, which no longer lifts it); on four times (204.5 per h0) it was 12 %
+  // under (docs/twod-validation.md §3, "A thin light layer near the cutoff").
   static constexpr double max_law_refinement = 6.0;
   // Where the law refines, a run whose wave stays small also takes a light layer of
   // near_cutoff_light_layer h0 instead of h0: its rows then go to the grains, and the light

@@ -102,9 +102,9 @@ std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& 
   return std::string(
       "--extrapolate on the thin light layer of a grid near the 2D cutoff: the deficit law's "
       "order, on which the extrapolation rests, was measured under h0 of light fluid and did not "
-      "hold under the thin layer at 1.4 cm (order 5.3; extrapolated +10.95 % against +0.14 % "
-      "measured, docs/twod-validation.md §3, \"A thin light layer near the cutoff\"): read the "
-      "measured growth first");
+      "hold under the thin layer at 1.4 cm (order 5.5; extrapolated +10.7 % against -0.41 % "
+      "measured, docs/twod-validation.md §3, \"The lighter light fluid as the default\"): read "
+      "the measured growth first");
 }
 
 std::optional<std::string> large_step_sine_start_warning(double cfl, bool sine_start) {

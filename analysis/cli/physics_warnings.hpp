@@ -56,8 +56,9 @@ std::optional<std::string> twod_growth_accuracy_warning(const SteadyState& base,
 // When --extrapolate is asked of a grid under a thin light layer (under_thin_light_layer: the
 // near-cutoff rule's, TwodSettings::refined_across, or a --Lz as low), a warning that the deficit
 // law's order, on which the extrapolation rests, was measured under h0 of light fluid and failed
-// under the thin layer at 1.4 cm (the pair converged at order 5.3 and the extrapolation overshot to
-// +10.95 % from +0.14 % measured; docs/twod-validation.md §3); nothing otherwise.
+// under the thin layer at 1.4 cm (the pair converged at order 5.5 and the extrapolation overshot to
+// +10.7 % from -0.41 % measured; with the former light fluid order 5.3, +10.95 % from +0.14 %;
+// docs/twod-validation.md §3); nothing otherwise.
 std::optional<std::string> thin_layer_extrapolation_warning(const TwodSettings& grid, double h0);
 
 // A 2D step above the VOF's 1/2 (--cfl, allowed up to 1) on a sine start: the decay of the short

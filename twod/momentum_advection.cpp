@@ -19,6 +19,14 @@
 // term, approximated from the BDF2 memory, moved the 2 cm slow wave away from its limit).
 // Without the transverse part the face value lags half a step in the direction along the face,
 // a first-order error that travels with the wave over the grid (docs/twod-validation.md §10).
+// "Upwind" is the side the face's carrier comes from: the mass flux's side in the consistent
+// form. A staggered volume's face carries the average of two cells' mass fluxes, and at an
+// overturned front the average of their velocities can point the other way (grains sinking
+// through one half of the face, light fluid rising faster through the other). Upwinded by that
+// velocity, the mass leaving a volume took its neighbour's momentum with it: an anti-diffusion
+// that grew a face's speed by ~10 % per step to 54 m/s under a front of the paper's 12 cm
+// rollwave at 48 cells per h0 (docs/twod-validation.md §11 item 9). In the velocity form the
+// carrier is the velocity, so nothing changes there.
 // Boundaries: no flux through the bed; at the top q is extended with zero gradient.
 #include "twod/momentum_advection.hpp"
 
@@ -37,7 +45,7 @@ double van_leer(double a, double b) {
   return a * b > 0.0 ? mean : 0.0;
 }
 
-// Upwind-reconstructed face value between q1 (behind) and q2 (ahead) for velocity V, with q0
+// Upwind-reconstructed face value between q1 (behind) and q2 (ahead) for carrier V, with q0
 // before q1 and q3 after q2. With c = |V| dt / h > 0 the slope is taken at the middle of the
 // step, (1 - c)/2 instead of 1/2 (MUSCL-Hancock, the advective part of BCG's face values): the
 // one-step update of one-dimensional advection is then second order in time, without forward
@@ -58,7 +66,8 @@ double inflow(double lower, double upper) {
 // The flux form on both staggered control volumes. The carriers cx, cz (laid out like u and w)
 // give what crosses x-face (i, k) and z-face (i, k) per unit area and time: the velocity itself
 // (the velocity form) or the mass flux (the consistent form); the control volume's fluxes are
-// their averages, upwinded by the averaged velocity. Each value is
+// their averages, upwinded by the averaged carrier (the averaged velocity sets only the Courant
+// number of the time centring). Each value is
 //   (sum of carrier q over the faces - q_P sum of carriers) / norm(P, sum of carriers, inflow).
 // Two passes: the faces first (each control-volume face is shared by two volumes, so its carrier
 // C and flux C q are computed once, into `faces`), then the volumes. The faces' stencils reach
@@ -172,15 +181,15 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
       };
       const double Wl = Wt(i), Wr = Wt(i + 1);
       const double tq_l = along_z(U, i, k, Wl), tq_r = along_z(U, i + 1, k, Wr);
-      tq = V >= 0.0 ? tq_l : tq_r;
+      tq = C >= 0.0 ? tq_l : tq_r;
       if constexpr (Carry) {
         const double tp_l = along_z(PU, i, k, Wl), tp_r = along_z(PU, i + 1, k, Wr);
-        tp = V >= 0.0 ? tp_l : tp_r;
+        tp = C >= 0.0 ? tp_l : tp_r;
       }
     }
-    ux_f[f] = C * (upwind(V, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
+    ux_f[f] = C * (upwind(C, U(i - 1, k), U(i, k), U(i + 1, k), U(i + 2, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      ux_p[f] = C * (upwind(V, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V)) - tp);
+      ux_p[f] = C * (upwind(C, PU(i - 1, k), PU(i, k), PU(i + 1, k), PU(i + 2, k), cx_of(V)) - tp);
   };
   // The u-volumes' z-face at corner (i, k), k = 1 .. nz (none through the bed, k = 0: below); at
   // the top q is extended with zero gradient.
@@ -189,16 +198,16 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     const double V = 0.5 * (W(i - 1, k) + W(i, k)), C = 0.5 * (CZ(i - 1, k) + CZ(i, k));
     auto face_value = [&](auto&& Q) {
       return k == nz ? Q(i, k - 1)
-                     : upwind(V, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
+                     : upwind(C, Q(i, k - 2), Q(i, k - 1), Q(i, k), Q(i, k + 1), cz_of(V));
     };
     double tq = 0.0, tp = 0.0;
     if (half_dt > 0.0 && k < nz) {  // at the upwind u-row, k - 1 or k (both, one chosen)
       const double Ub = U(i, k - 1), Ua = U(i, k);
       const double tq_b = along_x(U, i, k - 1, Ub), tq_a = along_x(U, i, k, Ua);
-      tq = V >= 0.0 ? tq_b : tq_a;
+      tq = C >= 0.0 ? tq_b : tq_a;
       if constexpr (Carry) {
         const double tp_b = along_x(PU, i, k - 1, Ub), tp_a = along_x(PU, i, k, Ua);
-        tp = V >= 0.0 ? tp_b : tp_a;
+        tp = C >= 0.0 ? tp_b : tp_a;
       }
     }
     uz_c[f] = C;
@@ -214,15 +223,15 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
     if (half_dt > 0.0) {  // at the upwind w-face, i - 1 or i (both evaluated, one chosen)
       const double Wl = W(i - 1, k), Wr = W(i, k);
       const double tq_l = along_z(W, i - 1, k, Wl), tq_r = along_z(W, i, k, Wr);
-      tq = V >= 0.0 ? tq_l : tq_r;
+      tq = C >= 0.0 ? tq_l : tq_r;
       if constexpr (Carry) {
         const double tp_l = along_z(PW, i - 1, k, Wl), tp_r = along_z(PW, i, k, Wr);
-        tp = V >= 0.0 ? tp_l : tp_r;
+        tp = C >= 0.0 ? tp_l : tp_r;
       }
     }
-    wx_f[f] = C * (upwind(V, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
+    wx_f[f] = C * (upwind(C, W(i - 2, k), W(i - 1, k), W(i, k), W(i + 1, k), cx_of(V)) - tq);
     if constexpr (Carry)
-      wx_p[f] = C * (upwind(V, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V)) - tp);
+      wx_p[f] = C * (upwind(C, PW(i - 2, k), PW(i - 1, k), PW(i, k), PW(i + 1, k), cx_of(V)) - tp);
   };
   // The w-volumes' z-face at cell centre (i, k), between w-faces k and k + 1.
   auto w_z_face = [=](int i, int k, auto&& U, auto&& W, auto&&, auto&& PW, auto&&, auto&& CZ) {
@@ -236,15 +245,15 @@ void flux_form_pass(const Grid& g, const Fields& s, const std::vector<double>& c
       };
       const double Ub = Ut(k), Ua = Ut(k + 1);
       const double tq_b = along_x(W, i, k, Ub), tq_a = along_x(W, i, k + 1, Ua);
-      tq = V >= 0.0 ? tq_b : tq_a;
+      tq = C >= 0.0 ? tq_b : tq_a;
       if constexpr (Carry) {
         const double tp_b = along_x(PW, i, k, Ub), tp_a = along_x(PW, i, k + 1, Ua);
-        tp = V >= 0.0 ? tp_b : tp_a;
+        tp = C >= 0.0 ? tp_b : tp_a;
       }
     }
-    wz_f[f] = C * (upwind(V, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
+    wz_f[f] = C * (upwind(C, W(i, k - 1), W(i, k), W(i, k + 1), W(i, k + 2), cz_of(V)) - tq);
     if constexpr (Carry)
-      wz_p[f] = C * (upwind(V, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
+      wz_p[f] = C * (upwind(C, PW(i, k - 1), PW(i, k), PW(i, k + 1), PW(i, k + 2), cz_of(V)) - tp);
   };
   // (rows in parallel: each entry is written once; parallel.hpp)
   parallel_for(nz + 1, true, [&](int k) {

@@ -17,11 +17,13 @@
 //   fluid at the next face runs left at 3 m/s (V < 0); its column and the three before it at
 //   0.2 m/s.
 // Mass that leaves takes the volume's own velocity with it, so one step changes neither volume's
-// velocity; taken from V's side, each would move by hundreds of m/s.
+// velocity; taken from V's side (the code before the 51st session) they went from -1 to -391 m/s
+// and from 0.2 to 2.53 m/s.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
+#include <utility>
+#include <vector>
 
 #include "twod/momentum_advection.hpp"
 

@@ -6,8 +6,8 @@
 //  - high-speed (figure 8): the Jop runs are ill posed: they blow up or give grid-dependent flows
 //    (the two resolutions more than 0.1 decade apart in I), and their perturbations grow at least
 //    twice as fast at each halving of the cell; the regularised runs converge on the I_zeta of
-//    (6.3) (within 2 %), agree between resolutions (within 0.01 decade) and stay uniform, their
-//    perturbations no larger on a finer grid;
+//    (6.3) (within 2 %), agree between resolutions (within 0.01 decade) and their perturbations
+//    decay;
 //  - rollwaves (figures 9-12): the runs reach t = 10 s, conserve mass, and grow a wave, the
 //    eigenmode start at the exact 2D theory's rate;
 //  - figure 13: eigenmode seeding lands nearer the exact 2D theory than the paper's start.
@@ -97,23 +97,17 @@ TEST(PaperCase, HighSpeedRegularisedConvergesOnItsIzeta) {
 // Figure 8's ill posedness, measured: the growth rate of the perturbation energy E of Jop's layer
 // rises without bound as the grid is refined. The fastest-growing waves of an ill-posed problem
 // are the shortest the grid holds and their rate grows in proportion to their wavenumber, so
-// each halving of the cell at least doubles the rate. The case file's layer at 16, 32 and 64
+// each halving of the cell at least doubles the rate. The case file's layer at about 16, 32 and 64
 // cells across h0 (8 does not grow: docs/paper-cases.md), each run only to past its break-up:
-// 0.25 s at 16 cells, 0.05 s at 32 and 64 (measured on 4 December: 109, 676, 2992 1/s over
-// hand-picked windows).
+// 0.25 s at 16 cells, 0.05 s at 32 and 64 (measured on 7 December: 101.6, 593.4, 2826.6 1/s).
 //
-// The regularised layer, run as long as Jop's coarsest (0.25 s) on 16 and 32 cells across h0:
-//  - it stays uniform: E stays below 1e-4 (I varies by under 1 % rms along each row), the same
-//    bound that Jop's layer on 16 cells crosses within the same time;
-//  - its perturbation does not rise with the grid: the largest E on 32 cells is no larger than
-//    on 16. The seed is noise on each cell's velocity, so a finer grid puts the same relative
-//    noise into shorter waves. A well-posed layer damps the shortest waves, so the finer seed
-//    feeds the long, amplified waves less; an ill-posed one amplifies them fastest.
-// Its E is not required to stay flat: the decelerating layer amplifies its noise for a while
-// (23-34 1/s on average over 0.05-0.25 s on 8 to 64 cells across h0, 7 December;
-// docs/paper-cases.md), though the exact 2D theory damps every wave of its steady state.
-// About 2 minutes on two cores.
-TEST(PaperCase, HighSpeedJopGrowthRisesWithTheGridRegularisedStaysUniform) {
+// The regularised layer, run as long as Jop's coarsest (0.25 s) on 16 and 32 cells across h0, is
+// well posed and its steady state damps every wave the domain holds (the exact 2D theory: -8.7
+// 1/s for the longest): its E falls from the seed and stays below it, so the case's measure finds
+// no growth. Measured on 7 December: from 7.6e-12 and 3.2e-11 to at most 2.4e-15 and 1.8e-14
+// after the first 20 ms. (With the surface on a cell face, as the case file had it before, E rose
+// to 3e-8 by 0.25 s instead: the case file says why it no longer is.) About 2 minutes on two cores.
+TEST(PaperCase, HighSpeedJopGrowthRisesWithTheGridRegularisedDecays) {
   const fs::path cases = fs::temp_directory_path() / "granbench_paper_high_speed_growth";
   fs::remove_all(cases);
   fs::create_directories(cases);
@@ -144,9 +138,8 @@ TEST(PaperCase, HighSpeedJopGrowthRisesWithTheGridRegularisedStaysUniform) {
           "nx = [256, 512]", "nz = [64, 128]");
   variant("high-speed-regularised-32", "curves = [\"regularised\"]", "t_end = 0.25",
           "samples = 251", "nx = [256]", "nz = [64]");
-  const double uniform = 1e-4;  // E below it: I varies by under 1 % rms along each row
-  // by cells across h0: Jop's growth rate and largest E, the regularised layer's largest E
-  std::map<int, double> jop_rate, jop_largest_E, regularised_largest_E;
+  std::map<int, double> jop_rate;  // by cells across h0
+  int regularised_runs = 0;
   for (const std::string name :
        {"high-speed-16", "high-speed-jop-32-64", "high-speed-regularised-32"}) {
     const fs::path out = fs::temp_directory_path() / ("granbench_paper_" + name);
@@ -158,30 +151,36 @@ TEST(PaperCase, HighSpeedJopGrowthRisesWithTheGridRegularisedStaysUniform) {
     const auto result = nlohmann::json::parse(r.out);
     for (const auto& run : result["runs"]) {
       EXPECT_EQ(run["status"], "completed") << run["label"];
-      const int cells_per_h0 = run["nz"].get<int>() / 2;  // Lz = 2 h0
-      const double E_max = largest(run["perturbation_energy"]);
-      std::cout << run["label"] << ": largest E " << E_max;
+      // nz / 2 names the grid: Lz = 48/23 h0, so nz = 32, 64, 128 hold 15.3, 30.7, 61.3 cells
+      // across h0
+      const int cells_per_h0 = run["nz"].get<int>() / 2;
+      std::cout << run["label"] << ": largest E " << largest(run["perturbation_energy"]);
       if (run["curve"] == "jop") {
         const auto& growth = run["energy_growth"];
         ASSERT_TRUE(growth["rate"].is_number()) << run["label"] << ": " << growth;
         jop_rate[cells_per_h0] = growth["rate"].get<double>();
-        jop_largest_E[cells_per_h0] = E_max;
         std::cout << ", d ln E/dt = " << growth["rate"] << " 1/s over " << growth["window"]
                   << " s\n";
       } else {
-        regularised_largest_E[cells_per_h0] = E_max;
         std::cout << "\n";
-        EXPECT_LT(E_max, uniform) << run["label"];
+        const auto& E = run["perturbation_energy"];
+        ASSERT_GE(E.size(), 2u);
+        ASSERT_TRUE(E[0].is_number()) << run["label"];
+        double E_after_start = 0.0;  // the largest E after t = 0
+        for (std::size_t n = 1; n < E.size(); ++n) {
+          ASSERT_TRUE(E[n].is_number()) << run["label"] << " at sample " << n;
+          E_after_start = std::max(E_after_start, E[n].get<double>());
+        }
+        EXPECT_LT(E_after_start, E[0].get<double>()) << run["label"];
+        EXPECT_TRUE(run["energy_growth"]["rate"].is_null()) << run["label"];
+        ++regularised_runs;
       }
     }
   }
   ASSERT_EQ(jop_rate.size(), 3u);
   EXPECT_GT(jop_rate[32], 2.0 * jop_rate[16]);
   EXPECT_GT(jop_rate[64], 2.0 * jop_rate[32]);
-  EXPECT_GT(jop_largest_E[16], uniform);  // the same bound tells Jop's layer from a uniform one
-  ASSERT_EQ(regularised_largest_E.size(), 2u);
-  EXPECT_GT(regularised_largest_E[16], 0.0);
-  EXPECT_LE(regularised_largest_E[32], regularised_largest_E[16]);
+  EXPECT_EQ(regularised_runs, 2);
 }
 
 // Figures 11-12: the runs reach 10 s and grow a wave. Grown: the surface's half range at 10 s is at

@@ -96,6 +96,8 @@ void run_compare(const CompareOptions& o, const SaturatedOptions& saturated) {
   std::vector<std::string> warnings = twod_warnings(chute.steady(), dz, chute.Lx);
   if (auto w = twod_grid_cost_warning(twod.nx, twod.nz, chute.Lx / twod.nx / dz))
     warnings.push_back(*w);
+  if (auto w = surface_on_face_warning(chute.h0, twod.domain_height(chute.h0), twod.nz))
+    warnings.push_back(*w);
   if (o.extrapolate)
     if (auto w = thin_layer_extrapolation_warning(twod, chute.h0)) warnings.push_back(*w);
   if (!saturated.enabled)  // (the saturated wave does not rest on the early growth)

@@ -132,6 +132,21 @@ std::optional<std::string> twod_grid_cost_warning(int nx, int nz, double aspect)
   return std::string(buf);
 }
 
+std::optional<std::string> surface_on_face_warning(double h0, double domain_height, int nz) {
+  const double cells_below = h0 / (domain_height / nz);  // the surface's height in cells
+  const double face = std::round(cells_below);
+  if (!(std::abs(cells_below - face) < 0.02) || face < 1.0) return std::nullopt;
+  char buf[480];
+  std::snprintf(buf, sizeof buf,
+                "the surface lies on a cell face (h0 = %.0f cells): there the volume fractions "
+                "fill the row above in thin films as it moves, which costs a growing 8 cm wave "
+                "0.5 %% of its rate, damps a 1.2 cm wave at 32 cells per h0 by 0.52 1/s more "
+                "than the theory against 0.19 mid-cell, and kept a flat layer's surface wave "
+                "alive (docs/twod-validation.md §4); --Lz %.10g puts it mid-cell on %d cells",
+                face, nz * h0 / (face - 0.5), nz);
+  return std::string(buf);
+}
+
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& s : warnings) std::cerr << "granbench: warning: " << s << "\n";
 }

@@ -120,6 +120,7 @@ TwodRunReport run_twod_model(const RunOptions& o, const TwodOptions& mo,
   const double wavelength = o.Lx / o.mode;
   std::vector<std::string> warnings = twod_warnings(base, grid.dz, wavelength);
   if (auto w = twod_grid_cost_warning(grid.nx, grid.nz, grid.dx / grid.dz)) warnings.push_back(*w);
+  if (auto w = surface_on_face_warning(base.h0, Lz, grid.nz)) warnings.push_back(*w);
   const std::optional<Checkpoint> restart = read_restart(mo.restart, grid, params, o.t_end);
   if (mo.extrapolate) check_extrapolation(o, mo);
   // Samples and snapshots on the grids k dt_out and j dt_snapshot from t = 0 (twod/run.hpp), so

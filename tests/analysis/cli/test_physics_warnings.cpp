@@ -190,19 +190,18 @@ TEST(PhysicsWarnings, AStepAboveOneHalfOnASineStartIsNamed) {
 }
 
 // The undisturbed surface on a cell face is named, with the --Lz that puts it mid-cell on the
-// same rows (docs/twod-validation.md §4): 160 x 64 on Lz = 2 h0 (h0 = 32 cells), the Gerris
-// comparison's 16 rows on 2 h0 (8 cells); a surface mid-cell or a quarter of a cell from a face is
-// not.
+// same rows (docs/twod-validation.md §4): 64 rows on Lz = 2 h0 (h0 = 32 cells) and 16 rows on
+// 2 h0 (8 cells); a surface mid-cell or a quarter of a cell from a face is not.
 TEST(PhysicsWarnings, ASurfaceOnACellFaceIsNamed) {
   const double h0 = 4e-3;
   const auto w = cli::surface_on_face_warning(h0, 2.0 * h0, 64);
   ASSERT_TRUE(w.has_value());
   EXPECT_NE(w->find("cell face (h0 = 32 cells)"), std::string::npos) << *w;
   EXPECT_NE(w->find("--Lz 0.008126984127 puts it mid-cell on 64 cells"), std::string::npos) << *w;
-  const auto gerris = cli::surface_on_face_warning(h0, 2.0 * h0, 16);
-  ASSERT_TRUE(gerris.has_value());
-  EXPECT_NE(gerris->find("(h0 = 8 cells)"), std::string::npos) << *gerris;
-  EXPECT_NE(gerris->find("--Lz 0.008533333333"), std::string::npos) << *gerris;
+  const auto sixteen_rows = cli::surface_on_face_warning(h0, 2.0 * h0, 16);
+  ASSERT_TRUE(sixteen_rows.has_value());
+  EXPECT_NE(sixteen_rows->find("(h0 = 8 cells)"), std::string::npos) << *sixteen_rows;
+  EXPECT_NE(sixteen_rows->find("--Lz 0.008533333333"), std::string::npos) << *sixteen_rows;
   EXPECT_FALSE(cli::surface_on_face_warning(h0, 64.0 * h0 / 31.5, 64));   // mid-cell, the default
   EXPECT_FALSE(cli::surface_on_face_warning(h0, 64.0 * h0 / 31.25, 64));  // a quarter up
   EXPECT_FALSE(cli::surface_on_face_warning(h0, 64.0 * h0 / 31.97, 64));  // 3 % of a cell below

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "analysis/comparison/twod_settings.hpp"
+#include "twod/grid.hpp"
 #include "twod/pressure_multigrid.hpp"
 
 namespace granbench::cli {
@@ -143,7 +144,7 @@ std::optional<std::string> surface_on_face_warning(double h0, double domain_heig
                 "0.5 %% of its rate, damps a 1.2 cm wave at 32 cells per h0 by 0.52 1/s more "
                 "than the theory against 0.19 mid-cell, and kept a flat layer's surface wave "
                 "alive (docs/twod-validation.md §4); --Lz %.10g puts it mid-cell on %d cells",
-                face, nz * h0 / (face - 0.5), nz);
+                face, twod::mid_cell_domain_height(h0, nz, domain_height / h0), nz);
   return std::string(buf);
 }
 
